@@ -1,2 +1,214 @@
 package raytracer.cli;
-public final class RenderCommand { public static void main(String[] a) { System.out.println("hi"); } }
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import raytracer.core.ViewPlane;
+import raytracer.core.World;
+import raytracer.image.Film;
+import raytracer.image.ImageWriters;
+import raytracer.io.scene.SceneException;
+import raytracer.io.scene.SceneLoader;
+import raytracer.render.RenderStats;
+import raytracer.render.Renderer;
+
+/**
+ * {@code render [SCENE] -o FILE ...}: loads a scene file (or the embedded default scene), applies the
+ * command-line overrides, renders, and writes the image atomically. Every failure is one line on
+ * stderr and a non-zero exit; {@code --verbose} adds the stack trace.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
+         sortOptions = false,
+         description = "Renders a scene file (YAML or JSON) to PNG or PFM. Without SCENE, renders the built-in default scene.")
+public final class RenderCommand implements Callable<Integer> {
+    static final String DEFAULT_SCENE_RESOURCE = "/raytracer/scenes/default.yaml";
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", description = "Scene file (.yaml, .yml or .json).")
+    Path scene;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE",
+            description = "Output image, .png (sRGB 8-bit) or .pfm (linear float). Default: <scene name>.png")
+    Path output;
+
+    @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width in pixels (overrides the scene).")
+    Integer width;
+
+    @Option(names = {"-H", "--height"}, paramLabel = "H", description = "Image height in pixels (overrides the scene).")
+    Integer height;
+
+    @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
+    Integer samples;
+
+    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads. Default: all cores (${DEFAULT-VALUE}).")
+    int threads = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--seed", paramLabel = "S", description = "Random seed; the same seed gives the same image. Default: ${DEFAULT-VALUE}.")
+    long seed = 1;
+
+    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
+    Integer maxDepth;
+
+    @Option(names = {"-q", "--quiet"}, description = "No progress bar and no summary line.")
+    boolean quiet;
+
+    @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
+    boolean verbose;
+
+    @Spec
+    CommandSpec spec;
+
+    public static void main(String[] args) {
+        System.exit(run(new PrintWriter(System.err, true), args));
+    }
+
+    /**
+     * Runs the command, writing messages to {@code err}, and returns its exit code: 0 done, 1 bad
+     * input or failed render, 2 bad usage.
+     */
+    public static int run(PrintWriter err, String... args) {
+        CommandLine cli = new CommandLine(new RenderCommand());
+        cli.setErr(err);
+        cli.setParameterExceptionHandler((ex, a) -> {
+            ex.getCommandLine().getErr().println("render: " + ex.getMessage() + " (see render --help)");
+            return 2;
+        });
+        cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
+            RenderCommand command = commandLine.getCommand();
+            commandLine.getErr().println("render: error: " + oneLine(ex));
+            if (command.verbose) {
+                ex.printStackTrace(commandLine.getErr());
+            }
+            return 1;
+        });
+        return cli.execute(args);
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        validateOptions();
+        Path out = output != null ? output : Path.of(defaultOutputName());
+        checkWritable(out);
+        World world = loadScene();
+        applyOverrides(world);
+        world.prepare();
+
+        Renderer renderer = new Renderer(world, threads, seed);
+        ViewPlane vp = world.viewPlane();
+        Film film = new Film(vp.hres(), vp.vres());
+        RenderStats stats;
+        if (!quiet && System.console() != null) {
+            try (Progress progress = new Progress(System.err, renderer::progress)) {
+                stats = renderer.render(film);
+            }
+        } else {
+            stats = renderer.render(film);
+        }
+        ImageWriters.write(film, vp.exposure(), out);
+        if (!quiet) {
+            spec.commandLine().getErr().println(summary(stats, out));
+        }
+        return 0;
+    }
+
+    private void validateOptions() {
+        requireAtLeast("--width", width, 1);
+        requireAtLeast("--height", height, 1);
+        requireAtLeast("--spp", samples, 1);
+        requireAtLeast("--max-depth", maxDepth, 0);
+        requireAtLeast("--threads", threads, 1);
+    }
+
+    private static void requireAtLeast(String option, Integer value, int min) {
+        if (value != null && value < min) {
+            throw new IllegalArgumentException(option + " must be at least " + min + ", got " + value);
+        }
+    }
+
+    private String defaultOutputName() {
+        if (scene == null) {
+            return "default.png";
+        }
+        String name = scene.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return (dot > 0 ? name.substring(0, dot) : name) + ".png";
+    }
+
+    /** Fails before rendering, not after, when the image could not be written. */
+    private static void checkWritable(Path out) throws IOException {
+        if (!ImageWriters.isSupported(out)) {
+            throw new IOException("cannot write " + out + ": unsupported extension (use one of "
+                                  + String.join(", ", ImageWriters.EXTENSIONS) + ")");
+        }
+        Path dir = out.toAbsolutePath().getParent();
+        if (dir == null || !Files.isDirectory(dir)) {
+            throw new IOException("cannot write " + out + ": directory " + dir + " does not exist");
+        }
+        if (!Files.isWritable(dir)) {
+            throw new IOException("cannot write " + out + ": directory " + dir + " is not writable");
+        }
+        if (Files.exists(out) && (Files.isDirectory(out) || !Files.isWritable(out))) {
+            throw new IOException("cannot write " + out + ": it is a directory or read-only");
+        }
+    }
+
+    private World loadScene() throws SceneException, IOException {
+        if (scene != null) {
+            return SceneLoader.load(scene);
+        }
+        try (InputStream in = RenderCommand.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
+            if (in == null) {
+                throw new IOException("the embedded default scene is missing from the jar");
+            }
+            return SceneLoader.load("default scene", new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        }
+    }
+
+    private void applyOverrides(World world) {
+        ViewPlane vp = world.viewPlane();
+        if (width != null || height != null) {
+            vp = vp.withResolution(width != null ? width : vp.hres(), height != null ? height : vp.vres());
+        }
+        if (samples != null) {
+            vp = vp.withSamples(samples);
+        }
+        if (maxDepth != null) {
+            vp = vp.withMaxDepth(maxDepth);
+        }
+        world.setViewPlane(vp);
+    }
+
+    static String summary(RenderStats s, Path out) {
+        return String.format("%s: %dx%d, %d spp, %d thread%s, %.2f s, %.2f M rays/s (%d primary, %d shadow, %d secondary)%s",
+            out, s.width(), s.height(), s.samplesPerPixel(), s.threads(), s.threads() == 1 ? "" : "s",
+            s.seconds(), s.raysPerSecond() / 1e6, s.primaryRays(), s.shadowRays(), s.secondaryRays(),
+            s.nonFiniteSamples() > 0 ? ", WARNING: " + s.nonFiniteSamples() + " non-finite samples dropped" : "");
+    }
+
+    private static String oneLine(Throwable ex) {
+        String message = ex.getMessage();
+        if (message == null || message.isBlank()) {
+            message = ex.getClass().getSimpleName();
+        }
+        return message.replace('\n', ' ');
+    }
+
+    /** Reads the version from the jar manifest. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String v = RenderCommand.class.getPackage().getImplementationVersion();
+            return new String[] {"render " + (v != null ? v : "(development build)")
+                                 + " on Java " + System.getProperty("java.version")};
+        }
+    }
+}

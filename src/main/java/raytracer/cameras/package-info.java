@@ -1,0 +1,2 @@
+/** Cameras (Suffern, chapters 8-10): pinhole, thin lens for depth of field, and orthographic. */
+package raytracer.cameras;

@@ -1,0 +1,51 @@
+package raytracer.core;
+
+import raytracer.math.BBox;
+import raytracer.math.Ray;
+
+/**
+ * Something a ray can hit (Suffern, chapter 19). Hits are two-phase: {@link #hit} finds the
+ * distance and records it, {@link #completeHit} computes the shading data once for the winner.
+ */
+public abstract class GeometricObject {
+    private Material material;
+    private boolean castsShadows = true;
+
+    /**
+     * Looks for a hit with 0 &lt; t &lt; {@code sr.t}; if found, records it with
+     * {@link ShadeRec#recordHit} (and what completion needs) and returns true.
+     */
+    public abstract boolean hit(Ray ray, ShadeRec sr);
+
+    /**
+     * True when the ray hits this object at some 0 &lt; t &lt; {@code tMax}. Nothing is recorded:
+     * {@code sr} only lends scratch rays to instances.
+     */
+    public abstract boolean shadowHit(Ray ray, double tMax, ShadeRec sr);
+
+    /**
+     * For the hit recorded in {@code sr} along {@code ray} (in this object's space): writes
+     * {@code sr.hitPoint}, {@code sr.hitError}, {@code sr.normal}, {@code sr.geometricNormal}
+     * (outward, any length) and {@code sr.u}, {@code sr.v}.
+     */
+    public abstract void completeHit(Ray ray, ShadeRec sr);
+
+    /** A box around the object; unbounded objects (planes) return an infinite box. */
+    public abstract BBox boundingBox();
+
+    public Material getMaterial() {
+        return material;
+    }
+
+    public void setMaterial(Material material) {
+        this.material = material;
+    }
+
+    public boolean castsShadows() {
+        return castsShadows;
+    }
+
+    public void setCastsShadows(boolean castsShadows) {
+        this.castsShadows = castsShadows;
+    }
+}

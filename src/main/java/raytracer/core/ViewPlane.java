@@ -1,0 +1,36 @@
+package raytracer.core;
+
+/**
+ * Image settings (Suffern, section 3.4): resolution, samples per pixel and their pattern, the
+ * deepest recursion, and the exposure applied before display encoding.
+ */
+public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int maxDepth, double exposure) {
+
+    public ViewPlane {
+        if (hres < 1 || vres < 1) {
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + hres + "x" + vres);
+        }
+        if (numSamples < 1) {
+            throw new IllegalArgumentException("samples per pixel must be at least 1, got " + numSamples);
+        }
+        if (maxDepth < 0) {
+            throw new IllegalArgumentException("max depth must be 0 or more, got " + maxDepth);
+        }
+        if (!(exposure > 0) || !Double.isFinite(exposure)) {
+            throw new IllegalArgumentException("exposure must be a positive number, got " + exposure);
+        }
+        numSamples = sampler.supportedCount(numSamples);
+    }
+
+    public ViewPlane withResolution(int h, int v) {
+        return new ViewPlane(h, v, numSamples, sampler, maxDepth, exposure);
+    }
+
+    public ViewPlane withSamples(int n) {
+        return new ViewPlane(hres, vres, n, sampler, maxDepth, exposure);
+    }
+
+    public ViewPlane withMaxDepth(int d) {
+        return new ViewPlane(hres, vres, numSamples, sampler, d, exposure);
+    }
+}

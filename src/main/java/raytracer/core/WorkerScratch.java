@@ -1,0 +1,66 @@
+package raytracer.core;
+
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+import raytracer.math.Rng;
+import raytracer.math.Vec3;
+
+/**
+ * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
+ * recursion depth, a shadow ray, the random generator and the sample buffers. Owned by one thread,
+ * so nothing on the per-ray path allocates or synchronises. Also counts the rays it traced.
+ */
+public final class WorkerScratch {
+    private final ShadeRec[] shadeRecs;
+    private final Ray[] rays;
+    private final Rgb[] colors;
+    public final Ray shadowRay = new Ray();
+    /** Colour scratch for one light's incident radiance and the BRDF values that meet it. */
+    public final Rgb lightScratch = new Rgb();
+    public final Rgb brdfScratch = new Rgb();
+    public final Rgb specularScratch = new Rgb();
+    public final Rng rng = new Rng(0);
+    public final Vec3 diskScratch = new Vec3();
+    public final double[] sampleX;
+    public final double[] sampleY;
+    public final double[] lensX;
+    public final double[] lensY;
+
+    public long primaryRays;
+    public long secondaryRays;
+    public long shadowRays;
+    /** Samples whose radiance came out NaN or infinite: dropped, counted, and expected to stay 0. */
+    public long nonFiniteSamples;
+
+    public WorkerScratch(World world) {
+        int levels = world.viewPlane().maxDepth() + 2;
+        shadeRecs = new ShadeRec[levels];
+        rays = new Ray[levels];
+        colors = new Rgb[levels];
+        for (int i = 0; i < levels; i++) {
+            shadeRecs[i] = new ShadeRec(world, this);
+            rays[i] = new Ray();
+            colors[i] = new Rgb();
+        }
+        int n = world.viewPlane().numSamples();
+        sampleX = new double[n];
+        sampleY = new double[n];
+        lensX = new double[n];
+        lensY = new double[n];
+    }
+
+    /** The hit record for a ray traced at {@code depth}. */
+    public ShadeRec shadeRec(int depth) {
+        return shadeRecs[depth];
+    }
+
+    /** The ray slot for rays traced at {@code depth} (a material fills slot depth + 1). */
+    public Ray ray(int depth) {
+        return rays[depth];
+    }
+
+    /** The colour slot for radiance returned from {@code depth}. */
+    public Rgb color(int depth) {
+        return colors[depth];
+    }
+}

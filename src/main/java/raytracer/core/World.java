@@ -1,0 +1,118 @@
+package raytracer.core;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Function;
+import raytracer.math.RGBColor;
+import raytracer.math.Ray;
+
+/**
+ * The scene (Suffern, chapter 3): objects, lights, camera, view plane and tracer. Built once, then
+ * {@link #prepare}d: the object and light lists become arrays and the scene is looked at once to
+ * leave out work it cannot use.
+ */
+public final class World {
+    private ViewPlane viewPlane;
+    private Camera camera;
+    private Tracer tracer;
+    private RGBColor background = RGBColor.BLACK;
+    private Light ambient;
+    private final List<GeometricObject> objectList = new ArrayList<>();
+    private final List<Light> lightList = new ArrayList<>();
+
+    private GeometricObject[] objects = new GeometricObject[0];
+    private GeometricObject[] shadowCasters = new GeometricObject[0];
+    private Light[] lights = new Light[0];
+
+    public World(ViewPlane viewPlane, Camera camera, Light ambient) {
+        this.viewPlane = viewPlane;
+        this.camera = camera;
+        this.ambient = ambient;
+    }
+
+    public void addObject(GeometricObject object) {
+        objectList.add(object);
+    }
+
+    public void addLight(Light light) {
+        lightList.add(light);
+    }
+
+    public void setTracer(Function<World, Tracer> factory) {
+        this.tracer = factory.apply(this);
+    }
+
+    public void setBackground(RGBColor background) {
+        this.background = background;
+    }
+
+    public void setViewPlane(ViewPlane viewPlane) {
+        this.viewPlane = viewPlane;
+    }
+
+    public void setCamera(Camera camera) {
+        this.camera = camera;
+    }
+
+    /** Freezes the lists into arrays; call after the last change and before rendering. */
+    public void prepare() {
+        objects = objectList.toArray(new GeometricObject[0]);
+        shadowCasters = objectList.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
+        lights = lightList.toArray(new Light[0]);
+    }
+
+    /**
+     * Finds the closest hit along {@code ray} and completes {@code sr} for it (Suffern's
+     * hit_objects, two-phase).
+     */
+    public boolean hit(Ray ray, ShadeRec sr) {
+        sr.beginSearch(ray, sr.depth, Double.POSITIVE_INFINITY);
+        for (GeometricObject object : objects) {
+            object.hit(ray, sr);
+        }
+        if (!sr.hitAnObject()) {
+            return false;
+        }
+        sr.complete(ray);
+        return true;
+    }
+
+    /** True when any shadow-casting object lies on {@code ray} with 0 &lt; t &lt; tMax. */
+    public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
+        sr.scratch.shadowRays++;
+        for (GeometricObject object : shadowCasters) {
+            if (object.shadowHit(ray, tMax, sr)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    public ViewPlane viewPlane() {
+        return viewPlane;
+    }
+
+    public Camera camera() {
+        return camera;
+    }
+
+    public Tracer tracer() {
+        return tracer;
+    }
+
+    public RGBColor background() {
+        return background;
+    }
+
+    public Light ambient() {
+        return ambient;
+    }
+
+    public Light[] lights() {
+        return lights;
+    }
+
+    public List<GeometricObject> objects() {
+        return List.copyOf(objectList);
+    }
+}

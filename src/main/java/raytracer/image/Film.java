@@ -1,0 +1,37 @@
+package raytracer.image;
+
+/**
+ * The rendered image in linear radiance, three floats per pixel, rows from the top. Each pixel is
+ * written by exactly one worker, so no locking is needed.
+ */
+public final class Film {
+    private final int width;
+    private final int height;
+    private final float[] rgb;
+
+    public Film(int width, int height) {
+        this.width = width;
+        this.height = height;
+        this.rgb = new float[3 * width * height];
+    }
+
+    public void set(int x, int y, double r, double g, double b) {
+        int i = 3 * (y * width + x);
+        rgb[i] = (float) r;
+        rgb[i + 1] = (float) g;
+        rgb[i + 2] = (float) b;
+    }
+
+    /** Channel c (0 red, 1 green, 2 blue) of pixel (x, y). */
+    public float get(int x, int y, int c) {
+        return rgb[3 * (y * width + x) + c];
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+}

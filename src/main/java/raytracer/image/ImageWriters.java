@@ -1,0 +1,109 @@
+package raytracer.image;
+
+import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageIO;
+
+/** Writes a {@link Film} as PNG (sRGB, 8 bit) or PFM (linear 32-bit float), chosen by extension. */
+public final class ImageWriters {
+    public static final List<String> EXTENSIONS = List.of(".png", ".pfm");
+
+    private ImageWriters() {
+    }
+
+    /** True when the file name ends in a supported extension. */
+    public static boolean isSupported(Path path) {
+        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
+        return EXTENSIONS.stream().anyMatch(name::endsWith);
+    }
+
+    /** Writes the film atomically: a failure never leaves a broken file in place of a good one. */
+    public static void write(Film film, double exposure, Path path) throws IOException {
+        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".png")) {
+            BufferedImage image = toImage(film, exposure);
+            AtomicFile.write(path, out -> {
+                if (!ImageIO.write(image, "png", out)) {
+                    throw new IOException("no PNG encoder available");
+                }
+            });
+        } else if (name.endsWith(".pfm")) {
+            AtomicFile.write(path, out -> writePfm(film, exposure, out));
+        } else {
+            throw new IOException("unsupported output format for " + path + " (use one of " + EXTENSIONS + ")");
+        }
+    }
+
+    public static BufferedImage toImage(Film film, double exposure) {
+        BufferedImage image = new BufferedImage(film.width(), film.height(), BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++) {
+                int r = ToneMap.toByte(film.get(x, y, 0), exposure);
+                int g = ToneMap.toByte(film.get(x, y, 1), exposure);
+                int b = ToneMap.toByte(film.get(x, y, 2), exposure);
+                image.setRGB(x, y, r << 16 | g << 8 | b);
+            }
+        }
+        return image;
+    }
+
+    /** Portable float map: header "PF", size, -1 for little endian; rows from the bottom. */
+    static void writePfm(Film film, double exposure, OutputStream stream) throws IOException {
+        DataOutputStream out = new DataOutputStream(new BufferedOutputStream(stream));
+        out.write(("PF\n" + film.width() + " " + film.height() + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        ByteBuffer row = ByteBuffer.allocate(12 * film.width()).order(ByteOrder.LITTLE_ENDIAN);
+        for (int y = film.height() - 1; y >= 0; y--) {
+            row.clear();
+            for (int x = 0; x < film.width(); x++) {
+                for (int c = 0; c < 3; c++) {
+                    row.putFloat((float) (film.get(x, y, c) * exposure));
+                }
+            }
+            out.write(row.array(), 0, row.position());
+        }
+        out.flush();
+    }
+
+    /** Reads a PFM written by {@link #writePfm} (or any little/big-endian colour PFM). */
+    public static Film readPfm(Path path) throws IOException {
+        byte[] bytes = java.nio.file.Files.readAllBytes(path);
+        int[] pos = {0};
+        String magic = token(bytes, pos);
+        if (!magic.equals("PF")) {
+            throw new IOException(path + ": not a colour PFM (magic '" + magic + "')");
+        }
+        int width = Integer.parseInt(token(bytes, pos));
+        int height = Integer.parseInt(token(bytes, pos));
+        double scale = Double.parseDouble(token(bytes, pos));
+        pos[0]++; // the single whitespace byte after the header
+        ByteBuffer data = ByteBuffer.wrap(bytes, pos[0], bytes.length - pos[0])
+            .order(scale < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
+        Film film = new Film(width, height);
+        for (int y = height - 1; y >= 0; y--) {
+            for (int x = 0; x < width; x++) {
+                film.set(x, y, data.getFloat(), data.getFloat(), data.getFloat());
+            }
+        }
+        return film;
+    }
+
+    private static String token(byte[] bytes, int[] pos) {
+        while (Character.isWhitespace(bytes[pos[0]])) {
+            pos[0]++;
+        }
+        int start = pos[0];
+        while (!Character.isWhitespace(bytes[pos[0]])) {
+            pos[0]++;
+        }
+        return new String(bytes, start, pos[0] - start, StandardCharsets.US_ASCII);
+    }
+}

@@ -1,0 +1,28 @@
+package raytracer.lights;
+
+import raytracer.core.Light;
+import raytracer.core.ShadeRec;
+import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+
+/** Constant light from everywhere, L = ls c (Suffern, section 14.3); it has no direction. */
+public final class Ambient extends Light {
+    private final RGBColor radiance;
+
+    public Ambient(double ls, RGBColor color) {
+        this.radiance = color.scale(ls);
+        setCastsShadows(false);
+    }
+
+    @Override
+    public double getDirection(ShadeRec sr, Vec3 wi) {
+        wi.set(0, 0, 0);
+        return 0;
+    }
+
+    @Override
+    public void L(ShadeRec sr, Rgb out) {
+        out.set(radiance);
+    }
+}

@@ -1,0 +1,42 @@
+package raytracer.lights;
+
+import raytracer.core.Light;
+import raytracer.core.ShadeRec;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+
+/**
+ * A point light of intensity I = ls c: it gives irradiance I cos(theta) / r^2 (SPEC section 2), so
+ * {@link #L} returns I / r^2 and the material multiplies by cos(theta).
+ */
+public final class PointLight extends Light {
+    private final double px;
+    private final double py;
+    private final double pz;
+    private final RGBColor intensity;
+
+    public PointLight(double ls, RGBColor color, Point3D position) {
+        this.px = position.x();
+        this.py = position.y();
+        this.pz = position.z();
+        this.intensity = color.scale(ls);
+    }
+
+    @Override
+    public double getDirection(ShadeRec sr, Vec3 wi) {
+        wi.set(px - sr.hitPoint.x, py - sr.hitPoint.y, pz - sr.hitPoint.z);
+        double distance = wi.length();
+        wi.set(wi.x / distance, wi.y / distance, wi.z / distance);
+        return distance;
+    }
+
+    @Override
+    public void L(ShadeRec sr, Rgb out) {
+        double dx = px - sr.hitPoint.x;
+        double dy = py - sr.hitPoint.y;
+        double dz = pz - sr.hitPoint.z;
+        out.set(intensity).scale(1 / (dx * dx + dy * dy + dz * dz));
+    }
+}

@@ -1,0 +1,55 @@
+package raytracer.materials;
+
+import raytracer.core.BRDF;
+import raytracer.core.Light;
+import raytracer.core.ShadeRec;
+import raytracer.core.WorkerScratch;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+
+/**
+ * The direct-lighting sum shared by Matte, Phong and Reflective (Suffern, listing 14.13):
+ * L = rho_a La + sum over lights of (f_d + f_s) L_i (n . wi), each light skipped when it is behind
+ * the surface or a shadow ray finds an occluder.
+ */
+final class DirectLighting {
+    private DirectLighting() {
+    }
+
+    /** Writes the reflected direct radiance into {@code out}; {@code specular} may be null. */
+    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, Rgb out) {
+        WorkerScratch scratch = sr.scratch;
+        Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+        Rgb f = scratch.brdfScratch;
+        Rgb incident = scratch.lightScratch;
+
+        ambient.rho(sr, wo, f);
+        sr.world.ambient().L(sr, incident);
+        out.setBlack().addProduct(f, incident, 1);
+
+        Vec3 wi = sr.wi;
+        for (Light light : sr.world.lights()) {
+            double distance = light.getDirection(sr, wi);
+            double nDotWi = sr.normal.dot(wi);
+            // the geometric normal decides which side the light is on, so bumped normals do not leak
+            if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
+                continue;
+            }
+            if (light.castsShadows()) {
+                Ray shadowRay = sr.spawnRay(wi.x, wi.y, wi.z, scratch.shadowRay);
+                if (light.inShadow(shadowRay, distance, sr)) {
+                    continue;
+                }
+            }
+            diffuse.f(sr, wo, wi, f);
+            if (specular != null) {
+                Rgb fs = scratch.specularScratch;
+                specular.f(sr, wo, wi, fs);
+                f.add(fs);
+            }
+            light.L(sr, incident);
+            out.addProduct(f, incident, nDotWi);
+        }
+    }
+}

@@ -1,0 +1,142 @@
+package raytracer.shapes;
+
+import raytracer.core.GeometricObject;
+import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
+import raytracer.math.Ray;
+import raytracer.math.Rounding;
+
+/**
+ * A cylinder around the y axis between heights y0 and y1 (Suffern, section 19.6), open or closed by
+ * two disk caps. Place it elsewhere with an {@link Instance}. The part hit is kept in
+ * {@code sr.primitive}: {@link #SIDE}, {@link #BOTTOM} or {@link #TOP}.
+ */
+public final class Cylinder extends GeometricObject {
+    static final int SIDE = 0;
+    static final int BOTTOM = 1;
+    static final int TOP = 2;
+
+    private final double y0;
+    private final double y1;
+    private final double radius;
+    private final boolean closed;
+
+    public Cylinder(double y0, double y1, double radius, boolean closed) {
+        if (!(radius > 0) || !Double.isFinite(radius)) {
+            throw new IllegalArgumentException("cylinder radius must be a positive number, got " + radius);
+        }
+        if (!(y1 > y0) || !Double.isFinite(y0) || !Double.isFinite(y1)) {
+            throw new IllegalArgumentException("cylinder needs finite heights with y0 < y1, got " + y0 + ", " + y1);
+        }
+        this.y0 = y0;
+        this.y1 = y1;
+        this.radius = radius;
+        this.closed = closed;
+    }
+
+    /** The nearest hit distance in (0, tMax) or +infinity; the part hit goes to {@code partSink.primitive}. */
+    private double nearest(Ray ray, double tMax, ShadeRec partSink) {
+        double best = Double.POSITIVE_INFINITY;
+        int part = SIDE;
+        // side: (ox + t dx)^2 + (oz + t dz)^2 = r^2, solved stably as for the sphere
+        double a = ray.dx * ray.dx + ray.dz * ray.dz;
+        if (a > 0) {
+            double halfB = ray.ox * ray.dx + ray.oz * ray.dz;
+            double s = halfB / a;
+            double lx = ray.ox - s * ray.dx;
+            double lz = ray.oz - s * ray.dz;
+            double discriminant = radius * radius - (lx * lx + lz * lz);
+            if (discriminant >= 0) {
+                double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
+                double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
+                double ta = q / a;
+                double tb = c / q;
+                double tNear = Math.min(ta, tb);
+                double tFar = Math.max(ta, tb);
+                if (tNear > 0 && tNear < tMax && withinHeight(ray.atY(tNear))) {
+                    best = tNear;
+                } else if (tFar > 0 && tFar < tMax && withinHeight(ray.atY(tFar))) {
+                    best = tFar;
+                }
+            }
+        }
+        if (closed && ray.dy != 0) {
+            double tBottom = (y0 - ray.oy) / ray.dy;
+            if (tBottom > 0 && tBottom < best && tBottom < tMax && withinDisk(ray, tBottom)) {
+                best = tBottom;
+                part = BOTTOM;
+            }
+            double tTop = (y1 - ray.oy) / ray.dy;
+            if (tTop > 0 && tTop < best && tTop < tMax && withinDisk(ray, tTop)) {
+                best = tTop;
+                part = TOP;
+            }
+        }
+        if (partSink != null && best < tMax) {
+            partSink.primitive = part;
+        }
+        return best;
+    }
+
+    private boolean withinHeight(double y) {
+        return y >= y0 && y <= y1;
+    }
+
+    private boolean withinDisk(Ray ray, double t) {
+        double x = ray.atX(t);
+        double z = ray.atZ(t);
+        return x * x + z * z <= radius * radius;
+    }
+
+    @Override
+    public boolean hit(Ray ray, ShadeRec sr) {
+        int previousPart = sr.primitive;
+        double t = nearest(ray, sr.t, sr);
+        if (t < sr.t) {
+            sr.recordHit(t, this);
+            return true;
+        }
+        sr.primitive = previousPart;
+        return false;
+    }
+
+    @Override
+    public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
+        return nearest(ray, tMax, null) < tMax;
+    }
+
+    @Override
+    public void completeHit(Ray ray, ShadeRec sr) {
+        double t = sr.t;
+        double px = ray.atX(t);
+        double py = ray.atY(t);
+        double pz = ray.atZ(t);
+        double g3 = Rounding.gamma(3);
+        if (sr.primitive == SIDE) {
+            // reproject radially: x and z then carry gamma(5)-sized errors (pbrt-v3, section 3.9.4)
+            double scale = radius / Math.sqrt(px * px + pz * pz);
+            px *= scale;
+            pz *= scale;
+            double g5 = Rounding.gamma(5);
+            sr.hitError.set(g5 * Math.abs(px), g3 * (Math.abs(ray.oy) + Math.abs(t * ray.dy)), g5 * Math.abs(pz));
+            sr.normal.set(px / radius, 0, pz / radius);
+            double phi = Math.atan2(px, pz) + Math.PI;
+            sr.u = phi / (2 * Math.PI);
+            sr.v = (py - y0) / (y1 - y0);
+        } else {
+            py = sr.primitive == TOP ? y1 : y0;
+            sr.hitError.set(g3 * (Math.abs(ray.ox) + Math.abs(t * ray.dx)), 0,
+                            g3 * (Math.abs(ray.oz) + Math.abs(t * ray.dz)));
+            sr.normal.set(0, sr.primitive == TOP ? 1 : -1, 0);
+            sr.u = 0.5 + 0.5 * px / radius;
+            sr.v = 0.5 + 0.5 * pz / radius;
+        }
+        sr.hitPoint.set(px, py, pz);
+        sr.geometricNormal.set(sr.normal);
+    }
+
+    @Override
+    public BBox boundingBox() {
+        return new BBox(-radius, y0, -radius, radius, y1, radius);
+    }
+}

@@ -1,0 +1,74 @@
+package raytracer.shapes;
+
+import raytracer.core.GeometricObject;
+import raytracer.core.LocalFrame;
+import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
+import raytracer.math.Matrix4;
+import raytracer.math.Ray;
+
+/**
+ * An object under an affine transform (Suffern, chapter 21): the ray is taken into the object's
+ * space by the inverse matrix, and the completed hit is brought back. Directions are not
+ * renormalised, so t is the same in both spaces. A material set on the instance overrides the
+ * object's.
+ */
+public final class Instance extends GeometricObject implements LocalFrame {
+    private final GeometricObject object;
+    private final Matrix4 forward;
+    private final Matrix4 inverse;
+
+    public Instance(GeometricObject object, Matrix4 transform) {
+        this.object = object;
+        this.forward = transform;
+        this.inverse = transform.inverse();
+    }
+
+    @Override
+    public boolean hit(Ray ray, ShadeRec sr) {
+        Ray local = sr.borrowLocalRay();
+        inverse.transformRay(ray, local);
+        boolean hit = object.hit(local, sr);
+        sr.releaseLocalRay();
+        if (hit) {
+            sr.pushTransform(this);
+        }
+        return hit;
+    }
+
+    @Override
+    public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
+        Ray local = sr.borrowLocalRay();
+        inverse.transformRay(ray, local);
+        boolean hit = object.shadowHit(local, tMax, sr);
+        sr.releaseLocalRay();
+        return hit;
+    }
+
+    @Override
+    public void completeHit(Ray ray, ShadeRec sr) {
+        throw new IllegalStateException("an instance is completed through its LocalFrame, never as a leaf");
+    }
+
+    @Override
+    public void toLocal(Ray in, Ray out) {
+        inverse.transformRay(in, out);
+    }
+
+    @Override
+    public void toWorld(ShadeRec sr) {
+        forward.transformPointError(sr.hitPoint, sr.hitError);
+        forward.transformPoint(sr.hitPoint);
+        inverse.transformNormalByInverse(sr.normal);
+        inverse.transformNormalByInverse(sr.geometricNormal);
+        if (getMaterial() != null) {
+            sr.material = getMaterial();
+        }
+    }
+
+    @Override
+    public BBox boundingBox() {
+        BBox box = object.boundingBox();
+        return box.isBounded() ? forward.transform(box) : box;
+    }
+}

@@ -1,0 +1,101 @@
+package raytracer.shapes;
+
+import raytracer.core.ShadeRec;
+import raytracer.math.Ray;
+import raytracer.math.Rounding;
+import raytracer.math.Vector3D;
+
+/**
+ * Watertight ray/triangle intersection (Woop, Benthin and Wald, "Watertight Ray/Triangle
+ * Intersection", JCGT 2013). The vertices are moved into a frame where the ray runs along +z from
+ * the origin; the three 2D edge functions are then computed from the same operands for both
+ * triangles that share an edge, so a ray through an edge or vertex hits at least one of them.
+ * Shared by the single {@link Triangle} and the mesh triangles.
+ */
+public final class Watertight {
+    private Watertight() {
+    }
+
+    /**
+     * Distance to the triangle (vertices at offsets {@code a}, {@code b}, {@code c} of the flat
+     * xyz array {@code v}) if it lies in (0, tMax), with the barycentrics of b and c written to
+     * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched.
+     */
+    public static double intersect(Ray ray, double[] v, int a, int b, int c, double tMax, ShadeRec sr) {
+        int kx = ray.kx;
+        int ky = ray.ky;
+        int kz = ray.kz;
+        // vertices relative to the ray origin, in the (kx, ky, kz) axis order
+        double ax = v[a + kx] - origin(ray, kx);
+        double ay = v[a + ky] - origin(ray, ky);
+        double az = v[a + kz] - origin(ray, kz);
+        double bx = v[b + kx] - origin(ray, kx);
+        double by = v[b + ky] - origin(ray, ky);
+        double bz = v[b + kz] - origin(ray, kz);
+        double cx = v[c + kx] - origin(ray, kx);
+        double cy = v[c + ky] - origin(ray, ky);
+        double cz = v[c + kz] - origin(ray, kz);
+        // shear so that the ray direction becomes (0, 0, 1)
+        ax -= ray.shearX * az;
+        ay -= ray.shearY * az;
+        bx -= ray.shearX * bz;
+        by -= ray.shearY * bz;
+        cx -= ray.shearX * cz;
+        cy -= ray.shearY * cz;
+        // scaled barycentrics: 2D edge functions
+        double u = cx * by - cy * bx;
+        double w1 = ax * cy - ay * cx;
+        double w2 = bx * ay - by * ax;
+        if ((u < 0 || w1 < 0 || w2 < 0) && (u > 0 || w1 > 0 || w2 > 0)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double det = u + w1 + w2;
+        if (det == 0) {
+            return Double.POSITIVE_INFINITY; // edge-on or degenerate
+        }
+        double sz = ray.shearZ;
+        double scaledT = u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz);
+        double t = scaledT / det;
+        if (!(t > 0 && t < tMax)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        sr.b1 = w1 / det;
+        sr.b2 = w2 / det;
+        return t;
+    }
+
+    private static double origin(Ray ray, int axis) {
+        return axis == 0 ? ray.ox : axis == 1 ? ray.oy : ray.oz;
+    }
+
+    /**
+     * Writes the hit point b0 a + b1 b + b2 c and its error bound gamma(7) sum |b_i p_i|
+     * (pbrt-v3, section 3.9.4) into {@code sr}.
+     */
+    public static void interpolate(double[] v, int a, int b, int c, double b0, double b1, double b2,
+                                   ShadeRec sr) {
+        double g = Rounding.gamma(7);
+        double x0 = b0 * v[a];
+        double x1 = b1 * v[b];
+        double x2 = b2 * v[c];
+        double y0 = b0 * v[a + 1];
+        double y1 = b1 * v[b + 1];
+        double y2 = b2 * v[c + 1];
+        double z0 = b0 * v[a + 2];
+        double z1 = b1 * v[b + 2];
+        double z2 = b2 * v[c + 2];
+        sr.hitPoint.set(x0 + x1 + x2, y0 + y1 + y2, z0 + z1 + z2);
+        sr.hitError.set(g * (Math.abs(x0) + Math.abs(x1) + Math.abs(x2)),
+                        g * (Math.abs(y0) + Math.abs(y1) + Math.abs(y2)),
+                        g * (Math.abs(z0) + Math.abs(z1) + Math.abs(z2)));
+    }
+
+    /**
+     * True when the edges e1, e2 are (nearly) parallel: |e1 x e2| is within rounding of zero relative
+     * to |e1| |e2|. Such a triangle has no area and never reports a hit.
+     */
+    public static boolean isDegenerate(Vector3D e1, Vector3D e2, Vector3D cross) {
+        double area = cross.length();
+        return !(area > Rounding.gamma(4) * e1.length() * e2.length()) || !Double.isFinite(area);
+    }
+}

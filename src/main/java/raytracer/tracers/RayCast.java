@@ -1,0 +1,35 @@
+package raytracer.tracers;
+
+import raytracer.core.ShadeRec;
+import raytracer.core.Tracer;
+import raytracer.core.WorkerScratch;
+import raytracer.core.World;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+
+/**
+ * The ray-cast tracer (Suffern, section 14.5): only primary rays are shaded. A secondary ray asked
+ * for by a mirror returns black, so the image shows direct light alone.
+ */
+public final class RayCast implements Tracer {
+    private final World world;
+
+    public RayCast(World world) {
+        this.world = world;
+    }
+
+    @Override
+    public void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+        if (depth > 0) {
+            out.setBlack();
+            return;
+        }
+        ShadeRec sr = scratch.shadeRec(depth);
+        sr.depth = depth;
+        if (world.hit(ray, sr)) {
+            sr.material.shade(sr, out);
+        } else {
+            out.set(world.background());
+        }
+    }
+}

@@ -1,0 +1,89 @@
+package raytracer.shapes;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static raytracer.shapes.HitTesting.ray;
+
+import org.junit.jupiter.api.Test;
+import raytracer.core.ShadeRec;
+import raytracer.math.Point3D;
+
+class BoxTest {
+    private final HitTesting h = new HitTesting();
+    private final Box box = new Box(new Point3D(-1, -1, -1), new Point3D(1, 1, 1));
+
+    @Test
+    void faceHitHasTheFaceNormalAndAnExactPoint() {
+        ShadeRec sr = h.hit(box, ray(0.25, 0.5, 5, 0, 0, -1));
+        assertNotNull(sr);
+        assertEquals(4, sr.t, 0);
+        assertEquals(1, sr.hitPoint.z, 0);
+        assertEquals(1, sr.normal.z, 0);
+        assertEquals(0, sr.hitError.z, 0, "the face coordinate is snapped, so it carries no error");
+    }
+
+    @Test
+    void eachOfTheSixFacesGivesItsOwnNormal() {
+        double[][] dirs = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        for (double[] d : dirs) {
+            ShadeRec sr = h.hit(box, ray(-5 * d[0] + 0.1, -5 * d[1] + 0.2, -5 * d[2] + 0.3, d[0], d[1], d[2]));
+            assertNotNull(sr);
+            assertEquals(-d[0], sr.normal.x, 0);
+            assertEquals(-d[1], sr.normal.y, 0);
+            assertEquals(-d[2], sr.normal.z, 0);
+        }
+    }
+
+    @Test
+    void rayThroughACornerHitsTheCorner() {
+        double s = 1 / Math.sqrt(3);
+        ShadeRec sr = h.hit(box, ray(3, 3, 3, -s, -s, -s));
+        assertNotNull(sr);
+        assertEquals(2 * Math.sqrt(3), sr.t, 1e-14);
+        assertEquals(1, sr.hitPoint.x, 1e-14);
+        assertEquals(1, sr.hitPoint.y, 1e-14);
+        assertEquals(1, sr.hitPoint.z, 1e-14);
+        assertEquals(1, Math.abs(sr.normal.x) + Math.abs(sr.normal.y) + Math.abs(sr.normal.z), 0);
+    }
+
+    @Test
+    void rayThroughAnEdgeHitsTheEdge() {
+        double s = Math.sqrt(0.5);
+        ShadeRec sr = h.hit(box, ray(3, 3, 0.5, -s, -s, 0));
+        assertNotNull(sr);
+        assertEquals(2 * Math.sqrt(2), sr.t, 1e-14);
+        assertEquals(1, sr.hitPoint.x, 1e-14);
+        assertEquals(1, sr.hitPoint.y, 1e-14);
+    }
+
+    @Test
+    void rayJustPastAnEdgeMisses() {
+        assertNull(h.hit(box, ray(1 + 1e-12, 5, 0, 0, -1, 0)));
+        assertNotNull(h.hit(box, ray(1 - 1e-12, 5, 0, 0, -1, 0)));
+    }
+
+    @Test
+    void fromInsideTheExitFaceIsHitAndNormalTurnsInward() {
+        ShadeRec sr = h.hit(box, ray(0, 0, 0, 0, 1, 0));
+        assertNotNull(sr);
+        assertEquals(1, sr.t, 0);
+        assertFalse(sr.frontFace);
+        assertEquals(-1, sr.normal.y, 0);
+    }
+
+    @Test
+    void rayGrazingAFacePlaneGivesNoNaN() {
+        ShadeRec sr = h.hit(box, ray(-5, 1, 0, 1, 0, 0));
+        assertTrue(sr == null || Double.isFinite(sr.t));
+        assertFalse(h.shadowHit(box, ray(0, 0, 5, 0, 0, 1), Double.POSITIVE_INFINITY));
+    }
+
+    @Test
+    void flatBoxIsRejected() {
+        assertThrows(IllegalArgumentException.class, () -> new Box(new Point3D(0, 0, 0), new Point3D(1, 0, 1)));
+    }
+}
