@@ -31,6 +31,15 @@ public final class ShadeRec {
     private final Ray[] localRays = new Ray[MAX_NESTING];
     private int nesting;
 
+    /**
+     * Node stack for BVH traversal. A traversal nested in another (a mesh inside an object BVH) works
+     * above the outer one's entries, starting at {@link #stackBase}.
+     */
+    public final int[] traversalStack = new int[MAX_NESTING * 64];
+    public int stackBase;
+    /** Bounding-volume tests made for this ray, for statistics and the BVH-cost view. */
+    public long boxTests;
+
     // ---- completed for the winner ----
     /** World-space hit point (object space while a leaf's completeHit runs). */
     public final Vec3 hitPoint = new Vec3();
@@ -74,6 +83,7 @@ public final class ShadeRec {
         object = null;
         transformCount = 0;
         nesting = 0;
+        stackBase = 0;
     }
 
     /** Called by a leaf that found a hit closer than {@link #t}. */

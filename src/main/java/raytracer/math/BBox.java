@@ -55,25 +55,8 @@ public record BBox(double x0, double y0, double z0, double x1, double y1, double
                         Math.max(Math.abs(z0), Math.abs(z1)));
     }
 
-    /**
-     * Slab test (Kay and Kajiya) on the interval (0, tMax). The far distance is enlarged by
-     * 1 + 2 gamma(3), as in pbrt-v3 section 3.9.2, so that rounding never loses a hit.
-     */
+    /** Conservative slab test on (0, tMax); see {@link Slabs#overlap}. */
     public boolean hit(Ray ray, double tMax) {
-        double tx0 = (x0 - ray.ox) * ray.invDx;
-        double tx1 = (x1 - ray.ox) * ray.invDx;
-        double tNear = Math.min(tx0, tx1);
-        double tFar = Math.max(tx0, tx1);
-        double ty0 = (y0 - ray.oy) * ray.invDy;
-        double ty1 = (y1 - ray.oy) * ray.invDy;
-        tNear = Math.max(tNear, Math.min(ty0, ty1));
-        tFar = Math.min(tFar, Math.max(ty0, ty1));
-        double tz0 = (z0 - ray.oz) * ray.invDz;
-        double tz1 = (z1 - ray.oz) * ray.invDz;
-        tNear = Math.max(tNear, Math.min(tz0, tz1));
-        tFar = Math.min(tFar, Math.max(tz0, tz1)) * SLAB_ROUNDING;
-        return tNear <= tFar && tFar > 0 && tNear < tMax;
+        return Slabs.overlap(new double[] {x0, y0, z0, x1, y1, z1}, 0, ray, tMax);
     }
-
-    private static final double SLAB_ROUNDING = 1 + 2 * Rounding.gamma(3);
 }

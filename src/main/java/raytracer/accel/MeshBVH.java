@@ -1,0 +1,202 @@
+package raytracer.accel;
+
+import java.util.List;
+import raytracer.core.GeometricObject;
+import raytracer.core.Material;
+import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
+import raytracer.math.Ray;
+import raytracer.shapes.Watertight;
+import raytracer.shapes.mesh.Mesh;
+
+/**
+ * A triangle mesh under a BVH: one object for all its triangles (as Sunflow's mesh is). The search
+ * visits the nearer child first and keeps only t, the triangle and its barycentrics; the winner's
+ * normal and u/v are interpolated once in {@link #completeHit}.
+ */
+public final class MeshBVH extends GeometricObject {
+    private final Mesh mesh;
+    private final double[] positions;
+    private final FlatBVH bvh;
+    /** Vertex offsets of the three corners of each triangle, in BVH leaf order. */
+    private final int[] corners;
+    private final Material[] materials;
+
+    /**
+     * @param materials one per material id of the mesh (or one for all); null entries fall back to
+     *                  the object's own material
+     */
+    public MeshBVH(Mesh mesh, FlatBVH bvh, List<Material> materials) {
+        if (bvh.primitiveCount() != mesh.triangleCount()) {
+            throw new IllegalArgumentException("the BVH was built for another mesh");
+        }
+        this.mesh = mesh;
+        this.positions = mesh.positions();
+        this.bvh = bvh;
+        this.materials = materials.toArray(new Material[0]);
+        corners = new int[3 * bvh.order.length];
+        for (int k = 0; k < bvh.order.length; k++) {
+            for (int c = 0; c < 3; c++) {
+                corners[3 * k + c] = mesh.corner(bvh.order[k], c);
+            }
+        }
+    }
+
+    /** The bounds of every triangle, six numbers each, as the builders take them. */
+    public static double[] triangleBounds(Mesh mesh) {
+        double[] p = mesh.positions();
+        double[] b = new double[6 * mesh.triangleCount()];
+        for (int t = 0; t < mesh.triangleCount(); t++) {
+            int a = mesh.corner(t, 0);
+            int c1 = mesh.corner(t, 1);
+            int c2 = mesh.corner(t, 2);
+            for (int k = 0; k < 3; k++) {
+                b[6 * t + k] = Math.min(p[a + k], Math.min(p[c1 + k], p[c2 + k]));
+                b[6 * t + 3 + k] = Math.max(p[a + k], Math.max(p[c1 + k], p[c2 + k]));
+            }
+        }
+        return b;
+    }
+
+    @Override
+    public boolean hit(Ray ray, ShadeRec sr) {
+        int[] stack = sr.traversalStack;
+        int base = sr.stackBase;
+        int sp = base;
+        sr.stackBase = base + FlatBVH.MAX_DEPTH;
+        int[] meta = bvh.meta;
+        boolean hit = false;
+        int node = 0;
+        while (true) {
+            if (bvh.slab(node, ray, sr.t, sr)) {
+                int info = meta[2 * node + 1];
+                if (info > 0) {
+                    int first = meta[2 * node];
+                    for (int k = first; k < first + info; k++) {
+                        double t = Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1],
+                                                        corners[3 * k + 2], sr.t, sr);
+                        if (t < sr.t) {
+                            sr.recordHit(t, this);
+                            sr.primitive = bvh.order[k];
+                            hit = true;
+                        }
+                    }
+                } else {
+                    // nearer child first: the one on the side the ray comes from
+                    if (ray.component(-info - 1) < 0) {
+                        stack[sp++] = node + 1;
+                        node = meta[2 * node];
+                    } else {
+                        stack[sp++] = meta[2 * node];
+                        node = node + 1;
+                    }
+                    continue;
+                }
+            }
+            if (sp == base) {
+                break;
+            }
+            node = stack[--sp];
+        }
+        sr.stackBase = base;
+        return hit;
+    }
+
+    @Override
+    public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
+        int[] stack = sr.traversalStack;
+        int base = sr.stackBase;
+        int sp = base;
+        int[] meta = bvh.meta;
+        int node = 0;
+        while (true) {
+            if (bvh.slab(node, ray, tMax, sr)) {
+                int info = meta[2 * node + 1];
+                if (info > 0) {
+                    int first = meta[2 * node];
+                    for (int k = first; k < first + info; k++) {
+                        if (Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1],
+                                                 corners[3 * k + 2], tMax, sr) < tMax) {
+                            return true;
+                        }
+                    }
+                } else {
+                    stack[sp++] = meta[2 * node];
+                    node = node + 1;
+                    continue;
+                }
+            }
+            if (sp == base) {
+                return false;
+            }
+            node = stack[--sp];
+        }
+    }
+
+    @Override
+    public void completeHit(Ray ray, ShadeRec sr) {
+        int tri = sr.primitive;
+        double b1 = sr.b1;
+        double b2 = sr.b2;
+        double b0 = 1 - b1 - b2;
+        int a = mesh.corner(tri, 0);
+        int b = mesh.corner(tri, 1);
+        int c = mesh.corner(tri, 2);
+        Watertight.interpolate(positions, a, b, c, b0, b1, b2, sr);
+        double[] p = positions;
+        double e1x = p[b] - p[a];
+        double e1y = p[b + 1] - p[a + 1];
+        double e1z = p[b + 2] - p[a + 2];
+        double e2x = p[c] - p[a];
+        double e2y = p[c + 1] - p[a + 1];
+        double e2z = p[c + 2] - p[a + 2];
+        sr.geometricNormal.set(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x);
+        if (mesh.hasNormals()) {
+            float[] n = mesh.normals();
+            int va = 3 * mesh.vertex(tri, 0);
+            int vb = 3 * mesh.vertex(tri, 1);
+            int vc = 3 * mesh.vertex(tri, 2);
+            sr.normal.set(b0 * n[va] + b1 * n[vb] + b2 * n[vc], b0 * n[va + 1] + b1 * n[vb + 1] + b2 * n[vc + 1],
+                          b0 * n[va + 2] + b1 * n[vb + 2] + b2 * n[vc + 2]);
+            if (!(sr.normal.length() > 0)) {
+                sr.normal.set(sr.geometricNormal);
+            } else if (sr.normal.dot(sr.geometricNormal) < 0) {
+                // vertex normals say which side is out; keep the geometric normal on that side
+                sr.geometricNormal.negate();
+            }
+        } else {
+            sr.normal.set(sr.geometricNormal);
+        }
+        if (mesh.hasUvs()) {
+            float[] uv = mesh.uvs();
+            int ta = 2 * mesh.vertex(tri, 0);
+            int tb = 2 * mesh.vertex(tri, 1);
+            int tc = 2 * mesh.vertex(tri, 2);
+            sr.u = b0 * uv[ta] + b1 * uv[tb] + b2 * uv[tc];
+            sr.v = b0 * uv[ta + 1] + b1 * uv[tb + 1] + b2 * uv[tc + 1];
+        } else {
+            sr.u = b1;
+            sr.v = b2;
+        }
+        int[] ids = mesh.materialIds();
+        if (ids != null && ids[tri] < materials.length && materials[ids[tri]] != null) {
+            sr.material = materials[ids[tri]];
+        } else if (ids == null && materials.length == 1 && materials[0] != null) {
+            sr.material = materials[0];
+        }
+    }
+
+    @Override
+    public BBox boundingBox() {
+        double[] b = bvh.bounds;
+        return new BBox(b[0], b[1], b[2], b[3], b[4], b[5]);
+    }
+
+    public FlatBVH bvh() {
+        return bvh;
+    }
+
+    public Mesh mesh() {
+        return mesh;
+    }
+}

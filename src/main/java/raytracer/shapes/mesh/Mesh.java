@@ -1,0 +1,103 @@
+package raytracer.shapes.mesh;
+
+import java.util.Arrays;
+import raytracer.math.BBox;
+
+/**
+ * Indexed triangle data in flat arrays. Every corner of a triangle is one vertex index into
+ * {@code positions} (x, y, z per vertex) and, when present, {@code normals} (x, y, z per vertex) and
+ * {@code uvs} (u, v per vertex). {@code materialIds} gives each triangle an index into a material
+ * list kept by whoever made the mesh, or is null when all share one material.
+ */
+public final class Mesh {
+    private final double[] positions;
+    private final float[] normals;
+    private final float[] uvs;
+    private final int[] triangles;
+    private final int[] materialIds;
+
+    public Mesh(double[] positions, float[] normals, float[] uvs, int[] triangles, int[] materialIds) {
+        if (positions.length % 3 != 0 || triangles.length % 3 != 0) {
+            throw new IllegalArgumentException("positions and triangles come in threes");
+        }
+        int vertices = positions.length / 3;
+        if (normals != null && normals.length != 3 * vertices) {
+            throw new IllegalArgumentException("need one normal per vertex");
+        }
+        if (uvs != null && uvs.length != 2 * vertices) {
+            throw new IllegalArgumentException("need one (u, v) per vertex");
+        }
+        if (materialIds != null && materialIds.length != triangles.length / 3) {
+            throw new IllegalArgumentException("need one material id per triangle");
+        }
+        for (int index : triangles) {
+            if (index < 0 || index >= vertices) {
+                throw new IllegalArgumentException("vertex index " + index + " out of range 0.." + (vertices - 1));
+            }
+        }
+        this.positions = positions;
+        this.normals = normals;
+        this.uvs = uvs;
+        this.triangles = triangles;
+        this.materialIds = materialIds;
+    }
+
+    public int vertexCount() {
+        return positions.length / 3;
+    }
+
+    public int triangleCount() {
+        return triangles.length / 3;
+    }
+
+    /** Offset into {@link #positions()} of corner {@code k} (0, 1, 2) of triangle {@code tri}. */
+    public int corner(int tri, int k) {
+        return 3 * triangles[3 * tri + k];
+    }
+
+    /** The vertex index of corner {@code k} of triangle {@code tri}. */
+    public int vertex(int tri, int k) {
+        return triangles[3 * tri + k];
+    }
+
+    public double[] positions() {
+        return positions;
+    }
+
+    public boolean hasNormals() {
+        return normals != null;
+    }
+
+    public boolean hasUvs() {
+        return uvs != null;
+    }
+
+    public float[] normals() {
+        return normals;
+    }
+
+    public float[] uvs() {
+        return uvs;
+    }
+
+    public int[] materialIds() {
+        return materialIds;
+    }
+
+    public BBox bounds() {
+        double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = 0; i < positions.length; i++) {
+            lo[i % 3] = Math.min(lo[i % 3], positions[i]);
+            hi[i % 3] = Math.max(hi[i % 3], positions[i]);
+        }
+        return new BBox(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    }
+
+    @Override
+    public String toString() {
+        return "Mesh[" + vertexCount() + " vertices, " + triangleCount() + " triangles"
+               + (normals != null ? ", normals" : "") + (uvs != null ? ", uvs" : "")
+               + (materialIds != null ? ", materials " + Arrays.stream(materialIds).distinct().count() : "") + "]";
+    }
+}

@@ -1,0 +1,109 @@
+package raytracer.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import raytracer.core.ShadeRec;
+import raytracer.math.Ray;
+import raytracer.shapes.Watertight;
+import raytracer.shapes.mesh.Mesh;
+
+class MeshBVHTest {
+
+    private static MeshBVH build(Mesh mesh, String builder) {
+        double[] bounds = MeshBVH.triangleBounds(mesh);
+        FlatBVH bvh = builder.equals("sah") ? new SahBuilder(4).build(bounds) : new MedianSplitBuilder(4).build(bounds);
+        return new MeshBVH(mesh, bvh, List.of());
+    }
+
+    /** A soup of random triangles of mixed sizes, overlapping, some degenerate. */
+    private static Mesh soup(int n, long seed) {
+        SplittableRandom r = new SplittableRandom(seed);
+        double[] p = new double[9 * n];
+        int[] f = new int[3 * n];
+        for (int t = 0; t < n; t++) {
+            double size = Math.pow(10, r.nextDouble(-3, 0));
+            double cx = r.nextDouble(-1, 1);
+            double cy = r.nextDouble(-1, 1);
+            double cz = r.nextDouble(-1, 1);
+            for (int k = 0; k < 9; k++) {
+                p[9 * t + k] = (k % 3 == 0 ? cx : k % 3 == 1 ? cy : cz) + size * r.nextDouble(-1, 1);
+            }
+            if (t % 50 == 0) {
+                System.arraycopy(p, 9 * t, p, 9 * t + 3, 3); // a degenerate one
+            }
+            f[3 * t] = 3 * t;
+            f[3 * t + 1] = 3 * t + 1;
+            f[3 * t + 2] = 3 * t + 2;
+        }
+        return new Mesh(p, null, null, f, null);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"median", "sah"})
+    void closestHitAndAnyHitAgreeWithBruteForce(String builder) {
+        Mesh mesh = soup(3000, 11);
+        MeshBVH bvh = build(mesh, builder);
+        ShadeRec sr = BvhTesting.shadeRec();
+        ShadeRec brute = BvhTesting.shadeRec();
+        SplittableRandom r = new SplittableRandom(5);
+        Ray ray = new Ray();
+        int hits = 0;
+        for (int i = 0; i < 20_000; i++) {
+            ray.set(r.nextDouble(-2, 2), r.nextDouble(-2, 2), r.nextDouble(-2, 2),
+                    r.nextDouble(-1, 1), r.nextDouble(-1, 1), r.nextDouble(-1, 1));
+            double best = Double.POSITIVE_INFINITY;
+            int bestTri = -1;
+            for (int t = 0; t < mesh.triangleCount(); t++) {
+                double d = Watertight.intersect(ray, mesh.positions(), mesh.corner(t, 0), mesh.corner(t, 1),
+                                                mesh.corner(t, 2), best, brute);
+                if (d < best) {
+                    best = d;
+                    bestTri = t;
+                }
+            }
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            boolean hit = bvh.hit(ray, sr);
+            assertEquals(bestTri >= 0, hit, "ray " + i);
+            assertEquals(hit, bvh.shadowHit(ray, Double.POSITIVE_INFINITY, sr));
+            if (hit) {
+                hits++;
+                assertEquals(best, sr.t, 0, "closest distance, ray " + i);
+                assertEquals(bestTri, sr.primitive);
+                // a shadow ray stopping just short of the closest hit finds nothing
+                assertEquals(false, bvh.shadowHit(ray, Math.nextDown(best), sr));
+            }
+        }
+        assertTrue(hits > 2000, "enough rays should hit to mean something: " + hits);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"median", "sah"})
+    void bvhIsWellFormed(String builder) {
+        Mesh mesh = soup(5000, 3);
+        FlatBVH bvh = build(mesh, builder).bvh();
+        boolean[] seen = new boolean[mesh.triangleCount()];
+        for (int k : bvh.order) {
+            seen[k] = true;
+        }
+        for (boolean s : seen) {
+            assertTrue(s, "every triangle appears in the leaf order");
+        }
+        assertTrue(bvh.depth() < FlatBVH.MAX_DEPTH);
+        // every node's box contains its children's boxes
+        for (int node = 0; node < bvh.nodeCount(); node++) {
+            if (!bvh.isLeaf(node)) {
+                for (int child : new int[] {node + 1, bvh.meta[2 * node]}) {
+                    for (int k = 0; k < 3; k++) {
+                        assertTrue(bvh.bounds[6 * node + k] <= bvh.bounds[6 * child + k]);
+                        assertTrue(bvh.bounds[6 * node + 3 + k] >= bvh.bounds[6 * child + 3 + k]);
+                    }
+                }
+            }
+        }
+    }
+}
