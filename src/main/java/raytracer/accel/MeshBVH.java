@@ -14,7 +14,7 @@ import raytracer.shapes.mesh.Mesh;
  * visits the nearer child first and keeps only t, the triangle and its barycentrics; the winner's
  * normal and u/v are interpolated once in {@link #completeHit}.
  */
-public final class MeshBVH extends GeometricObject {
+public final class MeshBVH extends GeometricObject implements Leaves {
     private final Mesh mesh;
     private final double[] positions;
     private final FlatBVH bvh;
@@ -60,77 +60,36 @@ public final class MeshBVH extends GeometricObject {
 
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
-        int[] stack = sr.traversalStack;
-        int base = sr.stackBase;
-        int sp = base;
-        sr.stackBase = base + FlatBVH.MAX_DEPTH;
-        int[] meta = bvh.meta;
-        boolean hit = false;
-        int node = 0;
-        while (true) {
-            if (bvh.slab(node, ray, sr.t, sr)) {
-                int info = meta[2 * node + 1];
-                if (info > 0) {
-                    int first = meta[2 * node];
-                    for (int k = first; k < first + info; k++) {
-                        double t = Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1],
-                                                        corners[3 * k + 2], sr.t, sr);
-                        if (t < sr.t) {
-                            sr.recordHit(t, this);
-                            sr.primitive = bvh.order[k];
-                            hit = true;
-                        }
-                    }
-                } else {
-                    // nearer child first: the one on the side the ray comes from
-                    if (ray.component(-info - 1) < 0) {
-                        stack[sp++] = node + 1;
-                        node = meta[2 * node];
-                    } else {
-                        stack[sp++] = meta[2 * node];
-                        node = node + 1;
-                    }
-                    continue;
-                }
-            }
-            if (sp == base) {
-                break;
-            }
-            node = stack[--sp];
-        }
-        sr.stackBase = base;
-        return hit;
+        return bvh.closestHit(ray, sr, this);
     }
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        int[] stack = sr.traversalStack;
-        int base = sr.stackBase;
-        int sp = base;
-        int[] meta = bvh.meta;
-        int node = 0;
-        while (true) {
-            if (bvh.slab(node, ray, tMax, sr)) {
-                int info = meta[2 * node + 1];
-                if (info > 0) {
-                    int first = meta[2 * node];
-                    for (int k = first; k < first + info; k++) {
-                        if (Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1],
-                                                 corners[3 * k + 2], tMax, sr) < tMax) {
-                            return true;
-                        }
-                    }
-                } else {
-                    stack[sp++] = meta[2 * node];
-                    node = node + 1;
-                    continue;
-                }
+        return bvh.anyHit(ray, tMax, sr, this);
+    }
+
+    @Override
+    public boolean hit(int first, int count, Ray ray, ShadeRec sr) {
+        boolean hit = false;
+        for (int k = first; k < first + count; k++) {
+            double t = Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1], corners[3 * k + 2], sr.t, sr);
+            if (t < sr.t) {
+                sr.recordHit(t, this);
+                sr.primitive = bvh.order[k];
+                hit = true;
             }
-            if (sp == base) {
-                return false;
-            }
-            node = stack[--sp];
         }
+        return hit;
+    }
+
+    @Override
+    public boolean shadowHit(int first, int count, Ray ray, double tMax, ShadeRec sr) {
+        for (int k = first; k < first + count; k++) {
+            if (Watertight.intersect(ray, positions, corners[3 * k], corners[3 * k + 1], corners[3 * k + 2], tMax, sr) < tMax) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Override

@@ -10,7 +10,7 @@ import raytracer.math.Ray;
  * A BVH over ordinary bounded objects (spheres, instances, meshes): the objects' own {@code hit}
  * methods record the closest hit, so completion goes straight to the leaf that won.
  */
-public final class ObjectBVH extends GeometricObject {
+public final class ObjectBVH extends GeometricObject implements Leaves {
     private final GeometricObject[] objects;
     private final boolean[] castsShadows;
     private final FlatBVH bvh;
@@ -47,71 +47,31 @@ public final class ObjectBVH extends GeometricObject {
 
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
-        int[] stack = sr.traversalStack;
-        int base = sr.stackBase;
-        int sp = base;
-        sr.stackBase = base + FlatBVH.MAX_DEPTH;
-        int[] meta = bvh.meta;
-        boolean hit = false;
-        int node = 0;
-        while (true) {
-            if (bvh.slab(node, ray, sr.t, sr)) {
-                int info = meta[2 * node + 1];
-                if (info > 0) {
-                    int first = meta[2 * node];
-                    for (int k = first; k < first + info; k++) {
-                        hit |= objects[k].hit(ray, sr);
-                    }
-                } else {
-                    if (ray.component(-info - 1) < 0) {
-                        stack[sp++] = node + 1;
-                        node = meta[2 * node];
-                    } else {
-                        stack[sp++] = meta[2 * node];
-                        node = node + 1;
-                    }
-                    continue;
-                }
-            }
-            if (sp == base) {
-                break;
-            }
-            node = stack[--sp];
-        }
-        sr.stackBase = base;
-        return hit;
+        return bvh.closestHit(ray, sr, this);
     }
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        int[] stack = sr.traversalStack;
-        int base = sr.stackBase;
-        int sp = base;
-        sr.stackBase = base + FlatBVH.MAX_DEPTH;
-        int[] meta = bvh.meta;
-        int node = 0;
+        return bvh.anyHit(ray, tMax, sr, this);
+    }
+
+    @Override
+    public boolean hit(int first, int count, Ray ray, ShadeRec sr) {
         boolean hit = false;
-        while (!hit) {
-            if (bvh.slab(node, ray, tMax, sr)) {
-                int info = meta[2 * node + 1];
-                if (info > 0) {
-                    int first = meta[2 * node];
-                    for (int k = first; k < first + info && !hit; k++) {
-                        hit = castsShadows[k] && objects[k].shadowHit(ray, tMax, sr);
-                    }
-                } else {
-                    stack[sp++] = meta[2 * node];
-                    node = node + 1;
-                    continue;
-                }
-            }
-            if (sp == base) {
-                break;
-            }
-            node = stack[--sp];
+        for (int k = first; k < first + count; k++) {
+            hit |= objects[k].hit(ray, sr);
         }
-        sr.stackBase = base;
         return hit;
+    }
+
+    @Override
+    public boolean shadowHit(int first, int count, Ray ray, double tMax, ShadeRec sr) {
+        for (int k = first; k < first + count; k++) {
+            if (castsShadows[k] && objects[k].shadowHit(ray, tMax, sr)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Override

@@ -36,6 +36,8 @@ public final class ShadeRec {
      * above the outer one's entries, starting at {@link #stackBase}.
      */
     public final int[] traversalStack = new int[MAX_NESTING * 64];
+    /** Entry distance of each stacked node, to skip nodes beyond the closest hit found since. */
+    public final double[] traversalEntry = new double[MAX_NESTING * 64];
     public int stackBase;
     /** Bounding-volume tests made for this ray, for statistics and the BVH-cost view. */
     public long boxTests;

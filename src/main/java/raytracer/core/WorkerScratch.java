@@ -49,6 +49,15 @@ public final class WorkerScratch {
         lensY = new double[n];
     }
 
+    /** Bounding-volume tests made by all rays of this worker so far. */
+    public long boxTests() {
+        long sum = 0;
+        for (ShadeRec sr : shadeRecs) {
+            sum += sr.boxTests;
+        }
+        return sum;
+    }
+
     /** The hit record for a ray traced at {@code depth}. */
     public ShadeRec shadeRec(int depth) {
         return shadeRecs[depth];

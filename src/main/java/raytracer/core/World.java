@@ -1,8 +1,11 @@
 package raytracer.core;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Function;
+import java.util.function.UnaryOperator;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
 
@@ -23,6 +26,7 @@ public final class World {
     private GeometricObject[] objects = new GeometricObject[0];
     private GeometricObject[] shadowCasters = new GeometricObject[0];
     private Light[] lights = new Light[0];
+    private final Map<String, Long> timings = new LinkedHashMap<>();
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -54,10 +58,19 @@ public final class World {
         this.camera = camera;
     }
 
-    /** Freezes the lists into arrays; call after the last change and before rendering. */
+    /** Freezes the lists into arrays, searching the objects as a plain list. */
     public void prepare() {
-        objects = objectList.toArray(new GeometricObject[0]);
-        shadowCasters = objectList.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
+        prepare(UnaryOperator.identity());
+    }
+
+    /**
+     * Freezes the lists into arrays; call after the last change and before rendering.
+     * {@code organizer} may regroup the objects (e.g. under a BVH) for faster searching.
+     */
+    public void prepare(UnaryOperator<List<GeometricObject>> organizer) {
+        List<GeometricObject> organized = organizer.apply(List.copyOf(objectList));
+        objects = organized.toArray(new GeometricObject[0]);
+        shadowCasters = organized.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
         lights = lightList.toArray(new Light[0]);
     }
 
@@ -86,6 +99,16 @@ public final class World {
             }
         }
         return false;
+    }
+
+    /** Notes how long a step of building this world took (parsing a mesh, building its BVH). */
+    public void recordTiming(String step, long nanos) {
+        timings.merge(step, nanos, Long::sum);
+    }
+
+    /** Build steps and their durations in nanoseconds, in the order they were first recorded. */
+    public Map<String, Long> timings() {
+        return java.util.Collections.unmodifiableMap(timings);
     }
 
     public ViewPlane viewPlane() {

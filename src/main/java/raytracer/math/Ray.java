@@ -25,6 +25,17 @@ public final class Ray {
     public double shearX;
     public double shearY;
     public double shearZ;
+    /** The origin's coordinates on the axes kx, ky, kz. */
+    public double originKx;
+    public double originKy;
+    public double originKz;
+    /**
+     * For each axis, the offset (0 or 3) of the near slab plane in a box stored as
+     * (x0, y0, z0, x1, y1, z1): the low plane when the ray runs towards +axis.
+     */
+    public int nearX;
+    public int nearY;
+    public int nearZ;
 
     public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox;
@@ -36,6 +47,9 @@ public final class Ray {
         invDx = 1.0 / dx;
         invDy = 1.0 / dy;
         invDz = 1.0 / dz;
+        nearX = dx < 0 ? 3 : 0;
+        nearY = dy < 0 ? 3 : 0;
+        nearZ = dz < 0 ? 3 : 0;
         prepareShear();
         return this;
     }
@@ -56,6 +70,13 @@ public final class Ray {
         shearX = component(kx) / dkz;
         shearY = component(ky) / dkz;
         shearZ = 1.0 / dkz;
+        originKx = originComponent(kx);
+        originKy = originComponent(ky);
+        originKz = originComponent(kz);
+    }
+
+    private double originComponent(int axis) {
+        return axis == 0 ? ox : axis == 1 ? oy : oz;
     }
 
     /** Direction component by axis index 0, 1, 2. */

@@ -14,44 +14,47 @@ public final class Slabs {
      * plane gives 0 * infinity) imposes no constraint instead of rejecting the box.
      */
     public static boolean overlap(double[] b, int i, Ray ray, double tMax) {
-        double t0 = 0;
-        double t1 = tMax;
-        double near = (b[i] - ray.ox) * ray.invDx;
-        double far = (b[i + 3] - ray.ox) * ray.invDx;
-        if (near > far) {
-            double swap = near;
-            near = far;
-            far = swap;
-        }
-        far *= ROUNDING;
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-        if (t0 > t1) {
-            return false;
-        }
-        near = (b[i + 1] - ray.oy) * ray.invDy;
-        far = (b[i + 4] - ray.oy) * ray.invDy;
-        if (near > far) {
-            double swap = near;
-            near = far;
-            far = swap;
-        }
-        far *= ROUNDING;
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-        if (t0 > t1) {
-            return false;
-        }
-        near = (b[i + 2] - ray.oz) * ray.invDz;
-        far = (b[i + 5] - ray.oz) * ray.invDz;
-        if (near > far) {
-            double swap = near;
-            near = far;
-            far = swap;
-        }
-        far *= ROUNDING;
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-        return t0 <= t1;
+        return entry(b, i, ray, tMax) < Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * {@link #entry(double[], int, Ray, double)} for a box stored as six float bit patterns in
+     * {@code b[i..i+6)} (a packed BVH node).
+     */
+    public static double entry(int[] b, int i, Ray ray, double tMax) {
+        double tx0 = (Float.intBitsToFloat(b[i + ray.nearX]) - ray.ox) * ray.invDx;
+        double tx1 = (Float.intBitsToFloat(b[i + 3 - ray.nearX]) - ray.ox) * ray.invDx * ROUNDING;
+        double ty0 = (Float.intBitsToFloat(b[i + 1 + ray.nearY]) - ray.oy) * ray.invDy;
+        double ty1 = (Float.intBitsToFloat(b[i + 4 - ray.nearY]) - ray.oy) * ray.invDy * ROUNDING;
+        double tz0 = (Float.intBitsToFloat(b[i + 2 + ray.nearZ]) - ray.oz) * ray.invDz;
+        double tz1 = (Float.intBitsToFloat(b[i + 5 - ray.nearZ]) - ray.oz) * ray.invDz * ROUNDING;
+        double t0 = tx0 > 0 ? tx0 : 0;
+        double t1 = tx1 < tMax ? tx1 : tMax;
+        t0 = ty0 > t0 ? ty0 : t0;
+        t1 = ty1 < t1 ? ty1 : t1;
+        t0 = tz0 > t0 ? tz0 : t0;
+        t1 = tz1 < t1 ? tz1 : t1;
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The distance at which the ray enters the box {@code b[i..i+6)}, clamped to 0 when it starts
+     * inside, or +infinity when it misses the box on (0, tMax).
+     */
+    public static double entry(double[] b, int i, Ray ray, double tMax) {
+        // near and far planes picked by the direction's sign, so no swap is needed
+        double tx0 = (b[i + ray.nearX] - ray.ox) * ray.invDx;
+        double tx1 = (b[i + 3 - ray.nearX] - ray.ox) * ray.invDx * ROUNDING;
+        double ty0 = (b[i + 1 + ray.nearY] - ray.oy) * ray.invDy;
+        double ty1 = (b[i + 4 - ray.nearY] - ray.oy) * ray.invDy * ROUNDING;
+        double tz0 = (b[i + 2 + ray.nearZ] - ray.oz) * ray.invDz;
+        double tz1 = (b[i + 5 - ray.nearZ] - ray.oz) * ray.invDz * ROUNDING;
+        double t0 = tx0 > 0 ? tx0 : 0;
+        double t1 = tx1 < tMax ? tx1 : tMax;
+        t0 = ty0 > t0 ? ty0 : t0;
+        t1 = ty1 < t1 ? ty1 : t1;
+        t0 = tz0 > t0 ? tz0 : t0;
+        t1 = tz1 < t1 ? tz1 : t1;
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
     }
 }

@@ -73,14 +73,16 @@ public final class Renderer {
         long secondary = 0;
         long shadow = 0;
         long nonFinite = 0;
+        long boxTests = 0;
         for (WorkerScratch s : scratches) {
+            boxTests += s.boxTests();
             primary += s.primaryRays;
             secondary += s.secondaryRays;
             shadow += s.shadowRays;
             nonFinite += s.nonFiniteSamples;
         }
         return new RenderStats(vp.hres(), vp.vres(), vp.numSamples(), threads, wall,
-                               primary, secondary, shadow, nonFinite);
+                               primary, secondary, shadow, nonFinite, boxTests);
     }
 
     private static List<int[]> tiles(int width, int height) {

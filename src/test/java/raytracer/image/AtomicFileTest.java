@@ -1,0 +1,68 @@
+package raytracer.image;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class AtomicFileTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void aWriteThatFailsHalfwayKeepsTheOldFileAndLeavesNoTemporary() throws IOException {
+        Path target = dir.resolve("image.png");
+        Files.write(target, new byte[] {9, 9});
+        assertThrows(IOException.class, () -> AtomicFile.write(target, out -> {
+            out.write(new byte[] {1, 2, 3});
+            throw new IOException("disk full");
+        }));
+        assertArrayEquals(new byte[] {9, 9}, Files.readAllBytes(target));
+        try (var files = Files.list(dir)) {
+            assertEquals(1, files.count());
+        }
+    }
+
+    @Test
+    void aSuccessfulWriteReplacesTheFile() throws IOException {
+        Path target = dir.resolve("image.png");
+        Files.write(target, new byte[] {9, 9});
+        AtomicFile.write(target, out -> out.write(new byte[] {1, 2, 3}));
+        assertArrayEquals(new byte[] {1, 2, 3}, Files.readAllBytes(target));
+    }
+
+    @Test
+    void pfmRoundTripsLinearValues() throws IOException {
+        Film film = new Film(3, 2);
+        film.set(0, 0, 0.25, 12.5, 1e-6);
+        film.set(2, 1, 100, 0, 3);
+        Path file = dir.resolve("x.pfm");
+        ImageWriters.write(film, 1, file);
+        Film back = ImageWriters.readPfm(file);
+        assertEquals(12.5f, back.get(0, 0, 1));
+        assertEquals(1e-6f, back.get(0, 0, 2));
+        assertEquals(100f, back.get(2, 1, 0));
+        assertTrue(Files.size(file) > 3 * 2 * 12);
+    }
+
+    @Test
+    void srgbEncodingMatchesTheStandardAtKnownPoints() {
+        assertEquals(0, ToneMap.toByte(0, 1));
+        assertEquals(255, ToneMap.toByte(1, 1));
+        assertEquals(255, ToneMap.toByte(7, 1));
+        assertEquals(0, ToneMap.toByte(Double.NaN, 1));
+        // reference values of the IEC 61966-2-1 curve: linear 0.5 -> 0.7354 -> code 188; 0.18 -> 118
+        assertEquals(0.5, ToneMap.srgbEncode(0.21404114), 1e-6);
+        assertEquals(188, ToneMap.toByte(0.5, 1));
+        assertEquals(118, ToneMap.toByte(0.18, 1));
+        assertEquals(118, ToneMap.toByte(0.09, 2), "exposure multiplies before encoding");
+        // the linear segment near black: 0.002 * 12.92 * 255 = 6.6
+        assertEquals(7, ToneMap.toByte(0.002, 1));
+    }
+}
