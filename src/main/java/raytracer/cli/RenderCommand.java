@@ -1,6 +1,9 @@
 package raytracer.cli;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
 import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
@@ -13,14 +16,17 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import raytracer.accel.Aggregation;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.image.FalseColor;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
+import raytracer.tracers.BvhCost;
 
 /**
  * {@code render [SCENE] -o FILE ...}: loads a scene file (or the embedded default scene), applies the
@@ -57,6 +63,18 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
     Integer maxDepth;
+
+    @Option(names = "--view", paramLabel = "VIEW",
+            description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
+    String view = "shaded";
+
+    @Option(names = "--accel", paramLabel = "MODE",
+            description = "Search structure for the scene's objects: auto (default; a BVH from "
+                          + Aggregation.AUTO_THRESHOLD + " bounded objects on), list, median or sah.")
+    String accel = "auto";
+
+    @Option(names = "--stats", description = "Print a breakdown: load steps, render time, rays by kind, BVH tests per ray, peak heap.")
+    boolean stats;
 
     @Option(names = {"-q", "--quiet"}, description = "No progress bar and no summary line.")
     boolean quiet;
@@ -98,26 +116,78 @@ public final class RenderCommand implements Callable<Integer> {
         validateOptions();
         Path out = output != null ? output : Path.of(defaultOutputName());
         checkWritable(out);
+        Aggregation.Mode accelMode = Aggregation.Mode.parse(accel);
+        boolean costView = parseView();
+        long loadStart = System.nanoTime();
         World world = loadScene();
+        long loadNanos = System.nanoTime() - loadStart;
         applyOverrides(world);
-        world.prepare();
+        long prepareStart = System.nanoTime();
+        world.prepare(objects -> Aggregation.organize(objects, accelMode));
+        long prepareNanos = System.nanoTime() - prepareStart;
+        if (costView) {
+            world.setTracer(BvhCost::new);
+        }
 
         Renderer renderer = new Renderer(world, threads, seed);
         ViewPlane vp = world.viewPlane();
         Film film = new Film(vp.hres(), vp.vres());
         RenderStats stats;
         if (!quiet && System.console() != null) {
-            try (Progress progress = new Progress(System.err, renderer::progress)) {
+            Progress progress = new Progress(System.err, renderer::progress);
+            try {
                 stats = renderer.render(film);
+            } finally {
+                progress.close();
             }
         } else {
             stats = renderer.render(film);
         }
-        ImageWriters.write(film, vp.exposure(), out);
+        PrintWriter err = spec.commandLine().getErr();
+        if (costView) {
+            double[] range = FalseColor.range(film);
+            film = FalseColor.apply(film, range[0], range[1]);
+            err.printf("bvh-cost: %.0f to %.0f bounding-volume tests per pixel (black to white)%n",
+                       range[0] / vp.numSamples(), range[1] / vp.numSamples());
+        }
+        ImageWriters.write(film, costView ? 1 : vp.exposure(), out);
         if (!quiet) {
-            spec.commandLine().getErr().println(summary(stats, out));
+            err.println(summary(stats, out));
+        }
+        if (this.stats) {
+            printStats(err, world, loadNanos, prepareNanos, stats);
         }
         return 0;
+    }
+
+    private boolean parseView() {
+        return switch (view) {
+            case "shaded" -> false;
+            case "bvh-cost" -> true;
+            default -> throw new IllegalArgumentException("unknown view '" + view + "'; allowed: shaded, bvh-cost");
+        };
+    }
+
+    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, RenderStats s) {
+        err.printf("stats: load scene %.3f s", loadNanos / 1e9);
+        world.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
+        err.println();
+        err.printf("stats: prepare (top-level BVH) %.3f s, render %.3f s%n", prepareNanos / 1e9, s.seconds());
+        err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
+                   s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
+        err.printf("stats: %.1f bounding-volume tests per ray, peak heap %.0f MiB%n",
+                   s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0));
+    }
+
+    /** The sum of the peak usage of the heap's memory pools since the JVM started. */
+    static long peakHeapBytes() {
+        long peak = 0;
+        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (pool.getType() == MemoryType.HEAP) {
+                peak += pool.getPeakUsage().getUsed();
+            }
+        }
+        return peak;
     }
 
     private void validateOptions() {

@@ -1,0 +1,53 @@
+package raytracer.io.scene;
+
+import java.util.Set;
+import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.Material;
+import raytracer.materials.Matte;
+import raytracer.materials.Phong;
+import raytracer.materials.Reflective;
+import raytracer.math.RGBColor;
+
+/** One entry of the {@code materials} map: matte, phong or reflective. */
+final class MaterialReader {
+    static final double KA = 0.2;
+    static final double KD = 0.8;
+    static final double KS = 0.2;
+    static final double EXPONENT = 20;
+    static final double KR = 0.75;
+
+    private MaterialReader() {
+    }
+
+    /** The material of objects that name none: matte light grey. */
+    static Material defaultMaterial() {
+        return new Matte(KA, KD, RGBColor.gray(0.8));
+    }
+
+    static Material read(Source source, String name, Node node) throws SceneException {
+        YamlObject type = new YamlObject(source, node, "material '" + name + "'",
+            Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized", "kr", "reflect-color"));
+        String kind = type.string("type", "matte");
+        Set<String> allowed = switch (kind) {
+            case "matte" -> Set.of("type", "ka", "kd", "color");
+            case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized");
+            case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color");
+            default -> throw source.error(type.raw("type"),
+                "unknown material type '" + kind + "'; allowed: matte, phong, reflective");
+        };
+        YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
+        double ka = m.number("ka", KA, 0, false);
+        double kd = m.number("kd", KD, 0, false);
+        RGBColor cd = m.color("color", RGBColor.WHITE);
+        if (kind.equals("matte")) {
+            return new Matte(ka, kd, cd);
+        }
+        double ks = m.number("ks", KS, 0, false);
+        RGBColor cs = m.color("specular-color", RGBColor.WHITE);
+        double exp = m.number("exponent", EXPONENT, 0, true);
+        if (kind.equals("phong")) {
+            return new Phong(ka, kd, cd, ks, cs, exp, m.bool("normalized", false));
+        }
+        return new Reflective(ka, kd, cd, ks, cs, exp, m.number("kr", KR, 0, false), m.color("reflect-color", RGBColor.WHITE));
+    }
+}

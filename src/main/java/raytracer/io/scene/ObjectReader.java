@@ -1,0 +1,107 @@
+package raytracer.io.scene;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.GeometricObject;
+import raytracer.core.Material;
+import raytracer.math.Matrix4;
+import raytracer.math.Normal;
+import raytracer.math.Point3D;
+import raytracer.math.Vector3D;
+import raytracer.shapes.Box;
+import raytracer.shapes.Cylinder;
+import raytracer.shapes.Instance;
+import raytracer.shapes.Plane;
+import raytracer.shapes.Sphere;
+import raytracer.shapes.Triangle;
+
+/** One entry of the {@code objects} list: a shape, its material and an optional transform. */
+final class ObjectReader {
+    private static final Set<String> COMMON = Set.of("type", "material", "transform", "casts-shadows");
+    private static final Map<String, Set<String>> KEYS = Map.of(
+        "sphere", Set.of("center", "radius"),
+        "plane", Set.of("point", "normal"),
+        "box", Set.of("min", "max"),
+        "cylinder", Set.of("bottom", "top", "radius", "closed"),
+        "triangle", Set.of("vertices"));
+
+    private ObjectReader() {
+    }
+
+    static GeometricObject read(Source source, Node node, Map<String, Material> materials) throws SceneException {
+        YamlObject type = new YamlObject(source, node, "object", allKeys());
+        String kind = type.requiredString("type");
+        Set<String> specific = KEYS.get(kind);
+        if (specific == null) {
+            throw source.error(type.raw("type"), "unknown object type '" + kind + "'; allowed: "
+                               + String.join(", ", new TreeSet<>(KEYS.keySet())));
+        }
+        Set<String> allowed = new HashSet<>(COMMON);
+        allowed.addAll(specific);
+        YamlObject o = new YamlObject(source, node, kind, allowed);
+        GeometricObject shape;
+        try {
+            shape = shape(kind, o);
+        } catch (IllegalArgumentException e) {
+            throw source.error(node, kind + ": " + e.getMessage());
+        }
+        shape.setMaterial(material(o, materials));
+        shape.setCastsShadows(o.bool("casts-shadows", true));
+        if (!o.has("transform")) {
+            return shape;
+        }
+        Instance instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+        instance.setCastsShadows(shape.castsShadows());
+        return instance;
+    }
+
+    private static Set<String> allKeys() {
+        Set<String> all = new HashSet<>(COMMON);
+        KEYS.values().forEach(all::addAll);
+        return all;
+    }
+
+    private static GeometricObject shape(String kind, YamlObject o) throws SceneException {
+        return switch (kind) {
+            case "sphere" -> new Sphere(o.requiredPoint("center"), o.number("radius", 1, 0, true));
+            case "plane" -> {
+                Vector3D n = o.requiredVector("normal");
+                yield new Plane(o.point("point", Point3D.ORIGIN), new Normal(n.x(), n.y(), n.z()));
+            }
+            case "box" -> new Box(o.requiredPoint("min"), o.requiredPoint("max"));
+            case "cylinder" -> new Cylinder(o.number("bottom", 0), o.number("top", 1), o.number("radius", 1, 0, true),
+                                            o.bool("closed", true));
+            default -> triangle(o);
+        };
+    }
+
+    private static GeometricObject triangle(YamlObject o) throws SceneException {
+        List<Node> vertices = o.list("vertices");
+        if (vertices.size() != 3) {
+            throw o.source().error(o.required("vertices"), "'vertices' of a triangle must list 3 points, got " + vertices.size());
+        }
+        Point3D[] p = new Point3D[3];
+        for (int i = 0; i < 3; i++) {
+            double[] t = YamlObject.triple(o.source(), vertices.get(i), "vertex " + (i + 1) + " of the triangle");
+            p[i] = new Point3D(t[0], t[1], t[2]);
+        }
+        return new Triangle(p[0], p[1], p[2]);
+    }
+
+    private static Material material(YamlObject o, Map<String, Material> materials) throws SceneException {
+        if (!o.has("material")) {
+            return MaterialReader.defaultMaterial();
+        }
+        String name = o.requiredString("material");
+        Material m = materials.get(name);
+        if (m == null) {
+            throw o.source().error(o.raw("material"), "material '" + name + "' is not defined; defined: "
+                                   + (materials.isEmpty() ? "none" : String.join(", ", new TreeSet<>(materials.keySet()))));
+        }
+        return m;
+    }
+}

@@ -1,0 +1,160 @@
+package raytracer.io.scene;
+
+import java.io.IOException;
+import java.io.StringReader;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Set;
+import org.yaml.snakeyaml.LoaderOptions;
+import org.yaml.snakeyaml.Yaml;
+import org.yaml.snakeyaml.error.MarkedYAMLException;
+import org.yaml.snakeyaml.error.YAMLException;
+import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.Camera;
+import raytracer.core.Light;
+import raytracer.core.Material;
+import raytracer.core.ViewPlane;
+import raytracer.core.World;
+import raytracer.lights.Ambient;
+import raytracer.math.RGBColor;
+import raytracer.samplers.Samplers;
+import raytracer.tracers.RayCast;
+import raytracer.tracers.Whitted;
+
+/**
+ * Reads a scene file into a {@link World} (not yet prepared: the caller may still override the
+ * view plane). Every problem becomes a {@link SceneException} naming file, line and column.
+ */
+public final class SceneLoader {
+    private static final Set<String> SECTIONS =
+        Set.of("image", "tracer", "background", "camera", "ambient", "materials", "lights", "objects");
+    private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure");
+
+    private SceneLoader() {
+    }
+
+    public static World load(Path file) throws SceneException {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new SceneException("cannot read scene file " + file + ": no such file");
+        } catch (AccessDeniedException e) {
+            throw new SceneException("cannot read scene file " + file + ": permission denied");
+        } catch (CharacterCodingException e) {
+            throw new SceneException("cannot read scene file " + file + ": not UTF-8 text");
+        } catch (IOException e) {
+            String reason = Files.isDirectory(file) ? "it is a directory" : e.getMessage();
+            throw new SceneException("cannot read scene file " + file + ": " + reason, e);
+        }
+        Path folder = file.toAbsolutePath().getParent();
+        return load(new Source(file.toString(), folder), text);
+    }
+
+    /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
+    public static World load(String sourceName, String text) throws SceneException {
+        return load(new Source(sourceName, null), text);
+    }
+
+    private static World load(Source source, String text) throws SceneException {
+        Node root;
+        try {
+            LoaderOptions options = new LoaderOptions();
+            options.setAllowDuplicateKeys(false);
+            root = new Yaml(options).compose(new StringReader(text));
+        } catch (MarkedYAMLException e) {
+            String problem = e.getProblem() != null ? e.getProblem() : e.getMessage();
+            throw (e.getProblemMark() != null ? source.error(e.getProblemMark(), "syntax error: " + problem)
+                                              : new SceneException(source.name() + ": syntax error: " + problem));
+        } catch (YAMLException e) {
+            throw new SceneException(source.name() + ": syntax error: " + e.getMessage().replace('\n', ' '));
+        }
+        if (root == null) {
+            throw new SceneException(source.name() + ": the scene file is empty");
+        }
+        YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
+        ViewPlane vp = readImage(source, scene);
+        Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
+        World world = new World(vp, camera, readAmbient(source, scene));
+        world.setBackground(scene.color("background", RGBColor.BLACK));
+        String tracer = scene.string("tracer", "whitted");
+        switch (tracer) {
+            case "whitted" -> world.setTracer(Whitted::new);
+            case "ray-cast" -> world.setTracer(RayCast::new);
+            default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + tracer + "'; allowed: ray-cast, whitted");
+        }
+        Map<String, Material> materials = readMaterials(source, scene);
+        for (Node light : scene.list("lights")) {
+            world.addLight(LightReader.read(source, light));
+        }
+        if (!scene.has("objects")) {
+            throw source.error(root, "the scene has no 'objects' list");
+        }
+        for (Node object : scene.list("objects")) {
+            world.addObject(ObjectReader.read(source, object, materials));
+        }
+        return world;
+    }
+
+    private static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
+        YamlObject image = scene.has("image")
+            ? new YamlObject(source, scene.raw("image"), "image", IMAGE_KEYS)
+            : null;
+        if (image == null) {
+            return new ViewPlane(640, 360, 4, Samplers.byName("multi-jittered"), 5, 1);
+        }
+        String samplerName = image.string("sampler", "multi-jittered");
+        if (!Samplers.names().contains(samplerName)) {
+            throw source.error(image.raw("sampler"), "unknown sampler '" + samplerName + "'; allowed: "
+                               + String.join(", ", Samplers.names()));
+        }
+        return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
+                             image.integer("samples", 4, 1), Samplers.byName(samplerName),
+                             image.integer("max-depth", 5, 0), image.number("exposure", 1, 0, true));
+    }
+
+    private static Light readAmbient(Source source, YamlObject scene) throws SceneException {
+        if (!scene.has("ambient")) {
+            return new Ambient(0.1, RGBColor.WHITE);
+        }
+        YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", Set.of("radiance", "color"));
+        return new Ambient(a.number("radiance", 0.1, 0, false), a.color("color", RGBColor.WHITE));
+    }
+
+    private static Map<String, Material> readMaterials(Source source, YamlObject scene) throws SceneException {
+        Map<String, Material> materials = new LinkedHashMap<>();
+        if (!scene.has("materials")) {
+            return materials;
+        }
+        Node node = scene.raw("materials");
+        YamlObject names = new YamlObject(source, node, "materials", new AnyKey());
+        for (Map.Entry<String, Node> entry : names.keyNodes().entrySet()) {
+            materials.put(entry.getKey(), MaterialReader.read(source, entry.getKey(), names.raw(entry.getKey())));
+        }
+        return materials;
+    }
+
+    /** The materials map accepts any name as a key. */
+    private static final class AnyKey extends java.util.AbstractSet<String> {
+        @Override
+        public boolean contains(Object o) {
+            return true;
+        }
+
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return java.util.Collections.emptyIterator();
+        }
+
+        @Override
+        public int size() {
+            return 0;
+        }
+    }
+}

@@ -1,0 +1,246 @@
+package raytracer.io.scene;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+import org.yaml.snakeyaml.nodes.MappingNode;
+import org.yaml.snakeyaml.nodes.Node;
+import org.yaml.snakeyaml.nodes.NodeTuple;
+import org.yaml.snakeyaml.nodes.ScalarNode;
+import org.yaml.snakeyaml.nodes.SequenceNode;
+import org.yaml.snakeyaml.nodes.Tag;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Vector3D;
+
+/**
+ * One mapping of the scene file with typed, checked access. Construction rejects keys outside the
+ * allowed set and duplicate keys; every getter says what was expected where, so the user never
+ * sees a stack trace or a vague "bad value".
+ */
+final class YamlObject {
+    private final Source source;
+    private final Node node;
+    private final String what;
+    private final Map<String, Node> values = new LinkedHashMap<>();
+    private final Map<String, Node> keys = new LinkedHashMap<>();
+
+    YamlObject(Source source, Node node, String what, Collection<String> allowed) throws SceneException {
+        if (!(node instanceof MappingNode mapping)) {
+            throw source.error(node, what + " must be a mapping of keys to values, got " + describe(node));
+        }
+        this.source = source;
+        this.node = node;
+        this.what = what;
+        for (NodeTuple tuple : mapping.getValue()) {
+            if (!(tuple.getKeyNode() instanceof ScalarNode keyNode)) {
+                throw source.error(tuple.getKeyNode(), "keys in " + what + " must be plain names");
+            }
+            String key = keyNode.getValue();
+            if (!allowed.contains(key)) {
+                throw source.error(keyNode, "unknown key '" + key + "' in " + what + "; allowed: "
+                                   + String.join(", ", new TreeSet<>(allowed)));
+            }
+            if (values.containsKey(key)) {
+                throw source.error(keyNode, "duplicate key '" + key + "' in " + what);
+            }
+            values.put(key, tuple.getValueNode());
+            keys.put(key, keyNode);
+        }
+    }
+
+    Source source() {
+        return source;
+    }
+
+    Node node() {
+        return node;
+    }
+
+    String what() {
+        return what;
+    }
+
+    boolean has(String key) {
+        return values.containsKey(key);
+    }
+
+    /** The value node of a key, or null. */
+    Node raw(String key) {
+        return values.get(key);
+    }
+
+    /** The value node of a key that must be present. */
+    Node required(String key) throws SceneException {
+        Node value = values.get(key);
+        if (value == null) {
+            throw source.error(node, what + " needs the key '" + key + "'");
+        }
+        return value;
+    }
+
+    String string(String key, String fallback) throws SceneException {
+        Node value = values.get(key);
+        return value == null ? fallback : scalarText(value, key);
+    }
+
+    String requiredString(String key) throws SceneException {
+        return scalarText(required(key), key);
+    }
+
+    private String scalarText(Node value, String key) throws SceneException {
+        if (!(value instanceof ScalarNode scalar) || scalar.getTag().equals(Tag.NULL)) {
+            throw source.error(value, "'" + key + "' in " + what + " must be a single value, got " + describe(value));
+        }
+        return scalar.getValue();
+    }
+
+    double number(String key, double fallback) throws SceneException {
+        Node value = values.get(key);
+        return value == null ? fallback : number(source, value, "'" + key + "' in " + what);
+    }
+
+    double requiredNumber(String key) throws SceneException {
+        return number(source, required(key), "'" + key + "' in " + what);
+    }
+
+    /** A number that must be at least {@code min} (or above it, when {@code strict}). */
+    double number(String key, double fallback, double min, boolean strict) throws SceneException {
+        double v = has(key) ? requiredNumber(key) : fallback;
+        if (strict ? !(v > min) : !(v >= min)) {
+            throw source.error(has(key) ? raw(key) : node, "'" + key + "' in " + what + " must be "
+                               + (strict ? "greater than " : "at least ") + format(min) + ", got " + format(v));
+        }
+        return v;
+    }
+
+    int integer(String key, int fallback, int min) throws SceneException {
+        if (!has(key)) {
+            return fallback;
+        }
+        double v = requiredNumber(key);
+        if (v != Math.rint(v) || Math.abs(v) > Integer.MAX_VALUE) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be a whole number, got " + format(v));
+        }
+        if (v < min) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + (long) v);
+        }
+        return (int) v;
+    }
+
+    boolean bool(String key, boolean fallback) throws SceneException {
+        Node value = values.get(key);
+        if (value == null) {
+            return fallback;
+        }
+        if (value instanceof ScalarNode scalar && scalar.getTag().equals(Tag.BOOL)) {
+            return Boolean.parseBoolean(scalar.getValue().toLowerCase(java.util.Locale.ROOT))
+                   || scalar.getValue().equalsIgnoreCase("yes") || scalar.getValue().equalsIgnoreCase("on");
+        }
+        throw source.error(value, "'" + key + "' in " + what + " must be true or false, got " + describe(value));
+    }
+
+    double[] triple(String key, double[] fallback) throws SceneException {
+        Node value = values.get(key);
+        return value == null ? fallback : triple(source, value, "'" + key + "' in " + what);
+    }
+
+    Point3D point(String key, Point3D fallback) throws SceneException {
+        if (!has(key)) {
+            return fallback;
+        }
+        double[] t = triple(key, null);
+        return new Point3D(t[0], t[1], t[2]);
+    }
+
+    Point3D requiredPoint(String key) throws SceneException {
+        double[] t = triple(source, required(key), "'" + key + "' in " + what);
+        return new Point3D(t[0], t[1], t[2]);
+    }
+
+    Vector3D requiredVector(String key) throws SceneException {
+        double[] t = triple(source, required(key), "'" + key + "' in " + what);
+        return new Vector3D(t[0], t[1], t[2]);
+    }
+
+    Vector3D vector(String key, Vector3D fallback) throws SceneException {
+        if (!has(key)) {
+            return fallback;
+        }
+        double[] t = triple(key, null);
+        return new Vector3D(t[0], t[1], t[2]);
+    }
+
+    /** A linear RGB colour with non-negative components. */
+    RGBColor color(String key, RGBColor fallback) throws SceneException {
+        if (!has(key)) {
+            return fallback;
+        }
+        double[] t = triple(key, null);
+        if (t[0] < 0 || t[1] < 0 || t[2] < 0) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " must have no negative component");
+        }
+        return new RGBColor(t[0], t[1], t[2]);
+    }
+
+    List<Node> list(String key) throws SceneException {
+        Node value = values.get(key);
+        if (value == null) {
+            return List.of();
+        }
+        if (!(value instanceof SequenceNode sequence)) {
+            throw source.error(value, "'" + key + "' in " + what + " must be a list, got " + describe(value));
+        }
+        return new ArrayList<>(sequence.getValue());
+    }
+
+    /** Keys in file order with their key nodes (for maps of names, such as materials). */
+    Map<String, Node> keyNodes() {
+        return keys;
+    }
+
+    static double number(Source source, Node value, String what) throws SceneException {
+        if (!(value instanceof ScalarNode scalar)
+            || !(scalar.getTag().equals(Tag.INT) || scalar.getTag().equals(Tag.FLOAT))) {
+            throw source.error(value, what + " must be a number, got " + describe(value));
+        }
+        double v;
+        try {
+            v = Double.parseDouble(scalar.getValue().replace("_", ""));
+        } catch (NumberFormatException e) {
+            throw source.error(value, what + " must be a plain decimal number, got '" + scalar.getValue() + "'");
+        }
+        if (!Double.isFinite(v)) {
+            throw source.error(value, what + " must be a finite number, got '" + scalar.getValue() + "'");
+        }
+        return v;
+    }
+
+    static double[] triple(Source source, Node value, String what) throws SceneException {
+        if (!(value instanceof SequenceNode sequence) || sequence.getValue().size() != 3) {
+            throw source.error(value, what + " must be a list of 3 numbers [x, y, z], got " + describe(value));
+        }
+        double[] t = new double[3];
+        for (int i = 0; i < 3; i++) {
+            t[i] = number(source, sequence.getValue().get(i), what);
+        }
+        return t;
+    }
+
+    static String describe(Node value) {
+        if (value instanceof ScalarNode scalar) {
+            return scalar.getTag().equals(Tag.NULL) ? "nothing" : "'" + scalar.getValue() + "'";
+        }
+        if (value instanceof SequenceNode sequence) {
+            return "a list of " + sequence.getValue().size();
+        }
+        return "a mapping";
+    }
+
+    static String format(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+}

@@ -1,0 +1,205 @@
+package raytracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import raytracer.image.Film;
+import raytracer.image.ImageWriters;
+
+class RenderCommandTest {
+    @TempDir
+    Path dir;
+
+    /** Exit code and everything written to stderr. */
+    record Result(int code, String err) {
+        String[] lines() {
+            return err.strip().isEmpty() ? new String[0] : err.strip().split("\\R");
+        }
+    }
+
+    static Result run(String... args) {
+        StringWriter err = new StringWriter();
+        int code = RenderCommand.run(new PrintWriter(err, true), args);
+        return new Result(code, err.toString());
+    }
+
+    private Path scene(String name, String text) throws IOException {
+        Path file = dir.resolve(name);
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        return file;
+    }
+
+    private static final String SMALL = """
+        image: {width: 16, height: 8, samples: 1}
+        lights:
+          - {type: point, position: [0, 5, 5], intensity: 40}
+        objects:
+          - {type: sphere, center: [0, 0.5, 0], radius: 0.5}
+        """;
+
+    /** A failure is one readable line on stderr, without a stack trace. */
+    private static void assertOneLineError(Result r, String... fragments) {
+        assertTrue(r.code() != 0, "exit code should be non-zero");
+        assertEquals(1, r.lines().length, "expected one line, got:\n" + r.err());
+        for (String f : fragments) {
+            assertTrue(r.err().contains(f), "'" + f + "' missing from: " + r.err());
+        }
+        assertFalse(r.err().contains("\tat "), "stack trace printed without --verbose");
+    }
+
+    @Test
+    void defaultSceneRendersToAPngWithContent() throws IOException {
+        Path out = dir.resolve("default.png");
+        Result r = run("-o", out.toString(), "-W", "96", "-H", "54", "--spp", "1");
+        assertEquals(0, r.code(), r.err());
+        BufferedImage image = ImageIO.read(out.toFile());
+        assertEquals(96, image.getWidth());
+        assertEquals(54, image.getHeight());
+        // a real scene has many distinct colours, not a blank frame
+        long distinct = java.util.stream.IntStream.range(0, 96 * 54)
+            .map(i -> image.getRGB(i % 96, i / 96)).distinct().count();
+        assertTrue(distinct > 200, "only " + distinct + " distinct colours");
+        assertTrue(r.err().contains("96x54") && r.err().contains("rays/s"), "summary line: " + r.err());
+    }
+
+    @Test
+    void pfmOutputHoldsLinearFiniteValues() throws IOException {
+        Path out = dir.resolve("linear.pfm");
+        Result r = run(scene("s.yaml", SMALL).toString(), "-o", out.toString(), "-q");
+        assertEquals(0, r.code(), r.err());
+        assertEquals("", r.err(), "--quiet prints nothing");
+        Film film = ImageWriters.readPfm(out);
+        assertEquals(16, film.width());
+        assertEquals(8, film.height());
+        float max = 0;
+        for (int y = 0; y < 8; y++) {
+            for (int x = 0; x < 16; x++) {
+                assertTrue(Float.isFinite(film.get(x, y, 0)));
+                max = Math.max(max, film.get(x, y, 0));
+            }
+        }
+        assertTrue(max > 0, "the lit sphere must appear");
+    }
+
+    @Test
+    void sameImageBytesForOneTwoAndFourThreads() throws IOException {
+        byte[][] images = new byte[3][];
+        int[] threads = {1, 2, 4};
+        for (int i = 0; i < 3; i++) {
+            Path out = dir.resolve("t" + threads[i] + ".png");
+            Result r = run("-o", out.toString(), "-W", "120", "-H", "70", "--spp", "4", "-t", String.valueOf(threads[i]), "-q");
+            assertEquals(0, r.code(), r.err());
+            images[i] = Files.readAllBytes(out);
+        }
+        assertArrayEquals(images[0], images[1]);
+        assertArrayEquals(images[0], images[2]);
+        Path other = dir.resolve("seed2.png");
+        assertEquals(0, run("-o", other.toString(), "-W", "120", "-H", "70", "--spp", "4", "--seed", "2", "-q").code());
+        assertFalse(java.util.Arrays.equals(images[0], Files.readAllBytes(other)), "the seed must matter");
+    }
+
+    @Test
+    void missingSceneFile() {
+        assertOneLineError(run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString()), "nope.yaml");
+    }
+
+    @Test
+    void syntaxErrorNamesFileLineAndColumn() throws IOException {
+        Path s = scene("broken.yaml", "objects:\n  - {type: sphere, radius: [1, 2\n");
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "broken.yaml:");
+    }
+
+    @Test
+    void unknownKeyIsNamedWithTheAllowedOnes() throws IOException {
+        Path s = scene("typo.yaml", SMALL + "  - {type: sphere, center: [0, 0, 0], radus: 1}\n");
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "typo.yaml:6:", "radus", "radius");
+    }
+
+    @Test
+    void negativeRadius() throws IOException {
+        Path s = scene("neg.yaml", SMALL + "  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "neg.yaml:6:", "radius");
+    }
+
+    @Test
+    void nanValue() throws IOException {
+        Path s = scene("nan.yaml", SMALL + "  - {type: sphere, center: [0, .nan, 0], radius: 1}\n");
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "nan.yaml:6:");
+    }
+
+    @Test
+    void undefinedMaterial() throws IOException {
+        Path s = scene("mat.yaml", SMALL + "  - {type: sphere, center: [0, 0, 0], radius: 1, material: gold}\n");
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "mat.yaml:6:", "gold");
+    }
+
+    @Test
+    void zeroSizeImageInTheScene() throws IOException {
+        Path s = scene("zero.yaml", SMALL.replace("width: 16", "width: 0"));
+        assertOneLineError(run(s.toString(), "-o", dir.resolve("a.png").toString()), "zero.yaml:1:");
+    }
+
+    @Test
+    void outOfRangeOptions() {
+        String out = dir.resolve("a.png").toString();
+        assertOneLineError(run("-o", out, "--width", "0"), "--width");
+        assertOneLineError(run("-o", out, "--height", "-3"), "--height");
+        assertOneLineError(run("-o", out, "--spp", "0"), "--spp");
+        assertOneLineError(run("-o", out, "--threads", "0"), "--threads");
+        assertOneLineError(run("-o", out, "--max-depth", "-1"), "--max-depth");
+        assertOneLineError(run("-o", out, "--spp", "many"), "many");
+        assertOneLineError(run("-o", out, "--frobnicate"), "frobnicate");
+    }
+
+    @Test
+    void unwritableOutputFailsBeforeRendering() throws IOException {
+        Path file = Files.writeString(dir.resolve("plain.txt"), "x");
+        assertOneLineError(run("-o", file.resolve("out.png").toString()), "does not exist");
+        assertOneLineError(run("-o", dir.resolve("missing/out.png").toString()), "does not exist");
+        assertOneLineError(run("-o", dir.resolve("out.jpg").toString()), "unsupported", ".png");
+        assertOneLineError(run("-o", dir.toString()), "unsupported");
+    }
+
+    @Test
+    void aFailedRenderLeavesTheExistingImageUntouched() throws IOException {
+        Path out = dir.resolve("good.png");
+        byte[] good = {1, 2, 3};
+        Files.write(out, good);
+        Path s = scene("bad.yaml", SMALL + "  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
+        assertTrue(run(s.toString(), "-o", out.toString()).code() != 0);
+        assertArrayEquals(good, Files.readAllBytes(out));
+        try (var files = Files.list(dir)) {
+            assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".partial")), "no temp file left");
+        }
+    }
+
+    @Test
+    void verboseAddsTheStackTrace() throws IOException {
+        Result r = run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString(), "--verbose");
+        assertTrue(r.code() != 0);
+        assertTrue(r.err().contains("\tat "), r.err());
+    }
+
+    @Test
+    void helpAndVersion() {
+        StringWriter out = new StringWriter();
+        picocli.CommandLine cli = new picocli.CommandLine(new RenderCommand());
+        cli.setOut(new PrintWriter(out, true));
+        assertEquals(0, cli.execute("--help"));
+        assertTrue(out.toString().contains("--spp"), out.toString());
+        assertEquals(0, cli.execute("--version"));
+        assertTrue(out.toString().contains("render "), out.toString());
+    }
+}
