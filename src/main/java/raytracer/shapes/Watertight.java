@@ -26,15 +26,15 @@ public final class Watertight {
         int ky = ray.ky;
         int kz = ray.kz;
         // vertices relative to the ray origin, in the (kx, ky, kz) axis order
-        double ax = v[a + kx] - origin(ray, kx);
-        double ay = v[a + ky] - origin(ray, ky);
-        double az = v[a + kz] - origin(ray, kz);
-        double bx = v[b + kx] - origin(ray, kx);
-        double by = v[b + ky] - origin(ray, ky);
-        double bz = v[b + kz] - origin(ray, kz);
-        double cx = v[c + kx] - origin(ray, kx);
-        double cy = v[c + ky] - origin(ray, ky);
-        double cz = v[c + kz] - origin(ray, kz);
+        double ax = v[a + kx] - ray.originKx;
+        double ay = v[a + ky] - ray.originKy;
+        double az = v[a + kz] - ray.originKz;
+        double bx = v[b + kx] - ray.originKx;
+        double by = v[b + ky] - ray.originKy;
+        double bz = v[b + kz] - ray.originKz;
+        double cx = v[c + kx] - ray.originKx;
+        double cy = v[c + ky] - ray.originKy;
+        double cz = v[c + kz] - ray.originKz;
         // shear so that the ray direction becomes (0, 0, 1)
         ax -= ray.shearX * az;
         ay -= ray.shearY * az;
@@ -62,10 +62,6 @@ public final class Watertight {
         sr.b1 = w1 / det;
         sr.b2 = w2 / det;
         return t;
-    }
-
-    private static double origin(Ray ray, int axis) {
-        return axis == 0 ? ray.ox : axis == 1 ? ray.oy : ray.oz;
     }
 
     /**

@@ -23,14 +23,12 @@ final class CameraReader {
     }
 
     static Camera read(Source source, Node node) throws SceneException {
-        YamlObject type = new YamlObject(source, node, "camera",
-            Set.of("type", "eye", "look-at", "up", "fov", "lens-radius", "focal-distance", "view-height"));
-        String kind = type.string("type", "pinhole");
+        String kind = YamlObject.peekType(source, node, "camera", "pinhole");
         Set<String> allowed = switch (kind) {
             case "pinhole" -> Set.of("type", "eye", "look-at", "up", "fov");
             case "thin-lens" -> Set.of("type", "eye", "look-at", "up", "fov", "lens-radius", "focal-distance");
             case "orthographic" -> Set.of("type", "eye", "look-at", "up", "view-height");
-            default -> throw source.error(type.raw("type"),
+            default -> throw source.error(YamlObject.typeNode(node),
                 "unknown camera type '" + kind + "'; allowed: orthographic, pinhole, thin-lens");
         };
         YamlObject c = new YamlObject(source, node, kind + " camera", allowed);

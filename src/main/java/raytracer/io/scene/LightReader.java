@@ -13,17 +13,18 @@ final class LightReader {
     }
 
     static Light read(Source source, Node node) throws SceneException {
-        YamlObject type = new YamlObject(source, node, "light",
-            Set.of("type", "position", "intensity", "direction", "radiance", "color", "shadows"));
-        String kind = type.requiredString("type");
+        String kind = YamlObject.peekType(source, node, "light", null);
+        YamlObject common = null;
         Light light = switch (kind) {
             case "point" -> {
                 YamlObject l = new YamlObject(source, node, "point light", Set.of("type", "position", "intensity", "color", "shadows"));
+                common = l;
                 yield new PointLight(l.number("intensity", 1, 0, false), l.color("color", RGBColor.WHITE),
                                      l.requiredPoint("position"));
             }
             case "directional" -> {
                 YamlObject l = new YamlObject(source, node, "directional light", Set.of("type", "direction", "radiance", "color", "shadows"));
+                common = l;
                 try {
                     yield new Directional(l.number("radiance", 1, 0, false), l.color("color", RGBColor.WHITE),
                                           l.requiredVector("direction"));
@@ -31,9 +32,9 @@ final class LightReader {
                     throw source.error(l.raw("direction"), e.getMessage());
                 }
             }
-            default -> throw source.error(type.raw("type"), "unknown light type '" + kind + "'; allowed: directional, point");
+            default -> throw source.error(YamlObject.typeNode(node), "unknown light type '" + kind + "'; allowed: directional, point");
         };
-        light.setCastsShadows(type.bool("shadows", true));
+        light.setCastsShadows(common.bool("shadows", true));
         return light;
     }
 }

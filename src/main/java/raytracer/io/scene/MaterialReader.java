@@ -25,14 +25,12 @@ final class MaterialReader {
     }
 
     static Material read(Source source, String name, Node node) throws SceneException {
-        YamlObject type = new YamlObject(source, node, "material '" + name + "'",
-            Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized", "kr", "reflect-color"));
-        String kind = type.string("type", "matte");
+        String kind = YamlObject.peekType(source, node, "material '" + name + "'", "matte");
         Set<String> allowed = switch (kind) {
             case "matte" -> Set.of("type", "ka", "kd", "color");
             case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized");
             case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color");
-            default -> throw source.error(type.raw("type"),
+            default -> throw source.error(YamlObject.typeNode(node),
                 "unknown material type '" + kind + "'; allowed: matte, phong, reflective");
         };
         YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);

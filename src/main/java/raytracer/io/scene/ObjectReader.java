@@ -33,11 +33,10 @@ final class ObjectReader {
     }
 
     static GeometricObject read(Source source, Node node, Map<String, Material> materials) throws SceneException {
-        YamlObject type = new YamlObject(source, node, "object", allKeys());
-        String kind = type.requiredString("type");
+        String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
-            throw source.error(type.raw("type"), "unknown object type '" + kind + "'; allowed: "
+            throw source.error(YamlObject.typeNode(node), "unknown object type '" + kind + "'; allowed: "
                                + String.join(", ", new TreeSet<>(KEYS.keySet())));
         }
         Set<String> allowed = new HashSet<>(COMMON);
@@ -57,12 +56,6 @@ final class ObjectReader {
         Instance instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
         instance.setCastsShadows(shape.castsShadows());
         return instance;
-    }
-
-    private static Set<String> allKeys() {
-        Set<String> all = new HashSet<>(COMMON);
-        KEYS.values().forEach(all::addAll);
-        return all;
     }
 
     private static GeometricObject shape(String kind, YamlObject o) throws SceneException {

@@ -52,6 +52,39 @@ final class YamlObject {
         }
     }
 
+    /**
+     * The {@code type} of a mapping, read before its keys are checked so that an unknown key can be
+     * reported against the keys of that type; {@code fallback} when absent.
+     */
+    static String peekType(Source source, Node node, String what, String fallback) throws SceneException {
+        if (!(node instanceof MappingNode mapping)) {
+            throw source.error(node, what + " must be a mapping of keys to values, got " + describe(node));
+        }
+        for (NodeTuple tuple : mapping.getValue()) {
+            if (tuple.getKeyNode() instanceof ScalarNode key && key.getValue().equals("type")) {
+                if (!(tuple.getValueNode() instanceof ScalarNode value) || value.getTag().equals(Tag.NULL)) {
+                    throw source.error(tuple.getValueNode(), "'type' of " + what + " must be a name, got "
+                                       + describe(tuple.getValueNode()));
+                }
+                return value.getValue();
+            }
+        }
+        if (fallback == null) {
+            throw source.error(node, what + " needs the key 'type'");
+        }
+        return fallback;
+    }
+
+    /** The node holding the value of {@code type}, for messages about it. */
+    static Node typeNode(Node node) {
+        for (NodeTuple tuple : ((MappingNode) node).getValue()) {
+            if (tuple.getKeyNode() instanceof ScalarNode key && key.getValue().equals("type")) {
+                return tuple.getValueNode();
+            }
+        }
+        return node;
+    }
+
     Source source() {
         return source;
     }
@@ -206,6 +239,10 @@ final class YamlObject {
         if (!(value instanceof ScalarNode scalar)
             || !(scalar.getTag().equals(Tag.INT) || scalar.getTag().equals(Tag.FLOAT))) {
             throw source.error(value, what + " must be a number, got " + describe(value));
+        }
+        String text = scalar.getValue().toLowerCase(java.util.Locale.ROOT);
+        if (text.endsWith(".nan") || text.endsWith(".inf")) {
+            throw source.error(value, what + " must be a finite number, got '" + scalar.getValue() + "'");
         }
         double v;
         try {

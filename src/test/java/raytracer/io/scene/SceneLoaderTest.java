@@ -1,0 +1,155 @@
+package raytracer.io.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import raytracer.core.World;
+import raytracer.shapes.Instance;
+import raytracer.tracers.RayCast;
+
+class SceneLoaderTest {
+    private static final String BASE = """
+        image: {width: 32, height: 16, samples: 3, sampler: jittered, max-depth: 2, exposure: 2}
+        materials:
+          red: {type: phong, color: [1, 0, 0]}
+        lights:
+          - {type: point, position: [0, 5, 0], intensity: 10}
+        objects:
+          - {type: sphere, center: [0, 0, 0], radius: 1, material: red}
+        """;
+
+    private static String error(String text) {
+        SceneException e = assertThrows(SceneException.class, () -> SceneLoader.load("s.yaml", text));
+        assertEquals(1, e.getMessage().lines().count(), "one line: " + e.getMessage());
+        return e.getMessage();
+    }
+
+    private static void assertMessage(String message, String prefix, String... fragments) {
+        assertTrue(message.startsWith(prefix), "expected '" + prefix + "' at the start of: " + message);
+        for (String f : fragments) {
+            assertTrue(message.contains(f), "'" + f + "' missing from: " + message);
+        }
+    }
+
+    @Test
+    void validSceneLoadsWithItsSettings() throws SceneException {
+        World world = SceneLoader.load("s.yaml", BASE + "  - {type: plane, normal: [0, 1, 0]}\n"
+            + "  - {type: box, min: [0, 0, 0], max: [1, 1, 1], transform: [{rotate-y: 30}, {translate: [1, 0, 0]}]}\n");
+        assertEquals(32, world.viewPlane().hres());
+        assertEquals(16, world.viewPlane().vres());
+        assertEquals(4, world.viewPlane().numSamples(), "jittered rounds 3 up to 4");
+        assertEquals(2, world.viewPlane().maxDepth());
+        assertEquals(2, world.viewPlane().exposure());
+        assertEquals(3, world.objects().size());
+        assertTrue(world.objects().get(2) instanceof Instance);
+        world.prepare();
+        assertEquals(1, world.lights().length);
+    }
+
+    @Test
+    void defaultsApplyToAMinimalScene() throws SceneException {
+        World world = SceneLoader.load("min.yaml", "tracer: ray-cast\nobjects:\n  - {type: sphere, center: [0, 0, 0]}\n");
+        assertEquals(640, world.viewPlane().hres());
+        assertEquals(360, world.viewPlane().vres());
+        assertEquals(4, world.viewPlane().numSamples());
+        assertTrue(world.tracer() instanceof RayCast);
+        assertTrue(world.objects().get(0).getMaterial() != null, "a default material");
+    }
+
+    @Test
+    void jsonIsAccepted() throws SceneException {
+        World world = SceneLoader.load("s.json", "{\"image\": {\"width\": 8, \"height\": 8}, \"objects\": "
+                                                 + "[{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2}]}");
+        assertEquals(8, world.viewPlane().hres());
+    }
+
+    @Test
+    void theDocumentedExampleLoads() throws IOException, SceneException {
+        String doc = Files.readString(Path.of("docs/scene-format.md"));
+        int start = doc.indexOf("```yaml\n") + 8;
+        String example = doc.substring(start, doc.indexOf("```", start));
+        World world = SceneLoader.load("docs/scene-format.md", example);
+        assertEquals(6, world.objects().size());
+        assertEquals(800, world.viewPlane().hres());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', textBlock = """
+        unknown key in an object     | - {type: sphere, center: [0, 0, 0], radus: 1}                   | s.yaml:8:39: | unknown key 'radus' in sphere; allowed: casts-shadows, center, material, radius, transform, type
+        unknown object type          | - {type: torus}                                                  | s.yaml:8:12: | torus'; allowed: box, cylinder, plane, sphere, triangle
+        negative radius              | - {type: sphere, center: [0, 0, 0], radius: -1}                  | s.yaml:8:47: | 'radius' in sphere must be greater than 0, got -1
+        zero radius                  | - {type: sphere, center: [0, 0, 0], radius: 0}                   | s.yaml:8:47: | greater than 0
+        NaN coordinate               | - {type: sphere, center: [0, .nan, 0]}                           | s.yaml:8:32: | must be a finite number, got '.nan'
+        infinite coordinate          | - {type: sphere, center: [0, 0, .inf]}                           | s.yaml:8:35: | must be a finite number, got '.inf'
+        text where a number is due   | - {type: sphere, center: [0, 0, 0], radius: big}                 | s.yaml:8:47: | must be a number, got 'big'
+        two numbers for a point      | - {type: sphere, center: [0, 0]}                                 | s.yaml:8:28: | 3 numbers [x, y, z], got a list of 2
+        undefined material           | - {type: sphere, center: [0, 0, 0], material: gold}              | s.yaml:8:49: | material 'gold' is not defined; defined: red
+        duplicate key                | - {type: sphere, center: [0, 0, 0], center: [1, 1, 1]}           | s.yaml:8:                | duplicate
+        missing required key         | - {type: box, min: [0, 0, 0]}                                    | s.yaml:8:5:  | box needs the key 'max'
+        flat box                     | - {type: box, min: [0, 0, 0], max: [1, 0, 1]}                    | s.yaml:8:5:  | positive size
+        singular transform           | - {type: sphere, center: [0, 0, 0], transform: [{scale: 0}]}     | s.yaml:8:50: | singular
+        non-affine matrix            | - {type: sphere, center: [0, 0, 0], transform: [{matrix: [1,0,0,0, 0,1,0,0, 0,0,1,0, 1,0,0,1]}]} | s.yaml:8:60: | affine
+        degenerate triangle count    | - {type: triangle, vertices: [[0, 0, 0], [1, 0, 0]]}             | s.yaml:8:32: | 3 points, got 2
+        """)
+    void badObjectsNameLineColumnAndKey(String what, String object, String prefix, String fragment) {
+        String message = error(BASE + "  " + object + "\n");
+        assertMessage(message, prefix.strip(), fragment.strip());
+    }
+
+    @Test
+    void imageValuesAreRangeChecked() {
+        assertMessage(error(BASE.replace("width: 32", "width: 0")), "s.yaml:1:16:", "'width' in image must be at least 1, got 0");
+        assertMessage(error(BASE.replace("height: 16", "height: -4")), "s.yaml:1:28:", "at least 1");
+        assertMessage(error(BASE.replace("samples: 3", "samples: 0")), "s.yaml:1:41:", "'samples'");
+        assertMessage(error(BASE.replace("samples: 3", "samples: 2.5")), "s.yaml:1:41:", "whole number");
+        assertMessage(error(BASE.replace("max-depth: 2", "max-depth: -1")), "s.yaml:1:", "'max-depth'");
+        assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
+        assertMessage(error(BASE.replace("sampler: jittered", "sampler: sobol")), "s.yaml:1:", "sobol", "multi-jittered");
+        assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: exposure, height");
+    }
+
+    @Test
+    void otherSectionsAreChecked() {
+        assertMessage(error("camera: {fov: 190}\n" + BASE), "s.yaml:1:9:", "field of view");
+        assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "orthographic, pinhole, thin-lens");
+        assertMessage(error("camera: {type: orthographic, fov: 30}\n" + BASE), "s.yaml:1:30:", "'fov'", "view-height");
+        assertMessage(error("camera: {eye: [0, 0, 0], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "must differ");
+        assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "ray-cast, whitted");
+        assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
+        assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
+        assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
+        assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: spot}")),
+                      "s.yaml:5:", "spot", "directional, point");
+        assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: point}")),
+                      "s.yaml:5:", "needs the key 'position'");
+        assertMessage(error(BASE.replace("{type: phong, color: [1, 0, 0]}", "{type: phong, exponent: 0}")),
+                      "s.yaml:3:", "'exponent'");
+        assertMessage(error(BASE.replace("{type: phong, color: [1, 0, 0]}", "{type: glass}")), "s.yaml:3:", "glass");
+    }
+
+    @Test
+    void syntaxErrorsEmptyFilesAndMissingObjects() {
+        assertMessage(error("objects:\n  - {type: sphere, center: [0, 0, 0\n"), "s.yaml:3:", "syntax error");
+        assertMessage(error("objects: [\n  {type: sphere\n"), "s.yaml:", "syntax error");
+        assertMessage(error(""), "s.yaml:", "empty");
+        assertMessage(error("# only a comment\n"), "s.yaml:", "empty");
+        assertMessage(error("image: {width: 8}\n"), "s.yaml:1:1:", "no 'objects'");
+        assertMessage(error("- just\n- a list\n"), "s.yaml:1:1:", "mapping");
+    }
+
+    @Test
+    void unreadableFiles(@TempDir Path dir) {
+        SceneException missing = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("nope.yaml")));
+        assertMessage(missing.getMessage(), "cannot read scene file", "nope.yaml", "no such file");
+        SceneException folder = assertThrows(SceneException.class, () -> SceneLoader.load(dir));
+        assertMessage(folder.getMessage(), "cannot read scene file", "directory");
+    }
+}
