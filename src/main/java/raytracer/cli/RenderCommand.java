@@ -73,6 +73,10 @@ public final class RenderCommand implements Callable<Integer> {
                           + Aggregation.AUTO_THRESHOLD + " bounded objects on), list, median or sah.")
     String accel = "auto";
 
+    @Option(names = "--repeat", paramLabel = "N",
+            description = "Render N times in this JVM and report each (benchmarking: the first render includes JIT warm-up).")
+    int repeat = 1;
+
     @Option(names = "--stats", description = "Print a breakdown: load steps, render time, rays by kind, BVH tests per ray, peak heap.")
     boolean stats;
 
@@ -121,6 +125,9 @@ public final class RenderCommand implements Callable<Integer> {
         long loadStart = System.nanoTime();
         World world = loadScene();
         long loadNanos = System.nanoTime() - loadStart;
+        if (!quiet) {
+            world.warnings().forEach(w -> spec.commandLine().getErr().println("render: warning: " + w));
+        }
         applyOverrides(world);
         long prepareStart = System.nanoTime();
         world.prepare(objects -> Aggregation.organize(objects, accelMode));
@@ -129,8 +136,13 @@ public final class RenderCommand implements Callable<Integer> {
             world.setTracer(BvhCost::new);
         }
 
-        Renderer renderer = new Renderer(world, threads, seed);
         ViewPlane vp = world.viewPlane();
+        PrintWriter err = spec.commandLine().getErr();
+        for (int i = 1; i < repeat; i++) {
+            RenderStats warmup = new Renderer(world, threads, seed).render(new Film(vp.hres(), vp.vres()));
+            err.printf("render %d of %d: %.3f s, %.2f M rays/s%n", i, repeat, warmup.seconds(), warmup.raysPerSecond() / 1e6);
+        }
+        Renderer renderer = new Renderer(world, threads, seed);
         Film film = new Film(vp.hres(), vp.vres());
         RenderStats stats;
         if (!quiet && System.console() != null) {
@@ -143,7 +155,6 @@ public final class RenderCommand implements Callable<Integer> {
         } else {
             stats = renderer.render(film);
         }
-        PrintWriter err = spec.commandLine().getErr();
         if (costView) {
             double[] range = FalseColor.range(film);
             film = FalseColor.apply(film, range[0], range[1]);
@@ -196,6 +207,7 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--spp", samples, 1);
         requireAtLeast("--max-depth", maxDepth, 0);
         requireAtLeast("--threads", threads, 1);
+        requireAtLeast("--repeat", repeat, 1);
     }
 
     private static void requireAtLeast(String option, Integer value, int min) {

@@ -27,6 +27,7 @@ public final class World {
     private GeometricObject[] shadowCasters = new GeometricObject[0];
     private Light[] lights = new Light[0];
     private final Map<String, Long> timings = new LinkedHashMap<>();
+    private final List<String> warnings = new ArrayList<>();
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -109,6 +110,15 @@ public final class World {
     /** Build steps and their durations in nanoseconds, in the order they were first recorded. */
     public Map<String, Long> timings() {
         return java.util.Collections.unmodifiableMap(timings);
+    }
+
+    /** Notes something odd but harmless found while building (a missing texture); the CLI prints these. */
+    public void addWarning(String warning) {
+        warnings.add(warning);
+    }
+
+    public List<String> warnings() {
+        return List.copyOf(warnings);
     }
 
     public ViewPlane viewPlane() {

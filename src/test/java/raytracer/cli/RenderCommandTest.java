@@ -111,6 +111,27 @@ class RenderCommandTest {
     }
 
     @Test
+    void bvhCostViewOfTheBunnyIsBrightestOnTheBunny() throws IOException {
+        Path bunny = raytracer.io.obj.SharedAssets.path("meshes/stanford-bunny.obj").toAbsolutePath();
+        Path s = scene("bunny.yaml", "image: {width: 64, height: 64, samples: 1}\n"
+            + "camera: {eye: [-0.017, 0.11, 0.25], look-at: [-0.017, 0.11, 0], fov: 40}\n"
+            + "objects:\n  - {type: mesh, file: " + bunny + "}\n");
+        Path out = dir.resolve("cost.png");
+        Result r = run(s.toString(), "-o", out.toString(), "--view", "bvh-cost", "--stats");
+        assertEquals(0, r.code(), r.err());
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("bvh-cost: (\\d+) to (\\d+) bounding-volume tests").matcher(r.err());
+        assertTrue(m.find(), r.err());
+        int min = Integer.parseInt(m.group(1));
+        int max = Integer.parseInt(m.group(2));
+        assertTrue(min >= 1 && max > 20 * min, "range " + min + ".." + max);
+        BufferedImage image = ImageIO.read(out.toFile());
+        int centre = image.getRGB(32, 32) & 0xff;
+        int corner = image.getRGB(1, 1) & 0xff;
+        assertTrue(centre > corner + 50, "centre " + centre + " should be brighter than corner " + corner);
+        assertTrue(r.err().contains("bounding-volume tests per ray") && r.err().contains("peak heap"), r.err());
+    }
+
+    @Test
     void missingSceneFile() {
         assertOneLineError(run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString()), "nope.yaml");
     }

@@ -8,6 +8,7 @@ import java.util.TreeSet;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
+import raytracer.core.World;
 import raytracer.math.Matrix4;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
@@ -27,12 +28,14 @@ final class ObjectReader {
         "plane", Set.of("point", "normal"),
         "box", Set.of("min", "max"),
         "cylinder", Set.of("bottom", "top", "radius", "closed"),
-        "triangle", Set.of("vertices"));
+        "triangle", Set.of("vertices"),
+        "mesh", Set.of("file", "smooth", "bvh"));
 
     private ObjectReader() {
     }
 
-    static GeometricObject read(Source source, Node node, Map<String, Material> materials) throws SceneException {
+    static GeometricObject read(Source source, Node node, Map<String, Material> materials, World world)
+            throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
@@ -43,12 +46,16 @@ final class ObjectReader {
         allowed.addAll(specific);
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
-        try {
-            shape = shape(kind, o);
-        } catch (IllegalArgumentException e) {
-            throw source.error(node, kind + ": " + e.getMessage());
+        if (kind.equals("mesh")) {
+            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, world);
+        } else {
+            try {
+                shape = shape(kind, o);
+            } catch (IllegalArgumentException e) {
+                throw source.error(node, kind + ": " + e.getMessage());
+            }
+            shape.setMaterial(material(o, materials));
         }
-        shape.setMaterial(material(o, materials));
         shape.setCastsShadows(o.bool("casts-shadows", true));
         if (!o.has("transform")) {
             return shape;

@@ -97,7 +97,7 @@ public final class SceneLoader {
             throw source.error(root, "the scene has no 'objects' list");
         }
         for (Node object : scene.list("objects")) {
-            world.addObject(ObjectReader.read(source, object, materials));
+            world.addObject(ObjectReader.read(source, object, materials, world));
         }
         return world;
     }

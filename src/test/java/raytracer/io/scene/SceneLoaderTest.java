@@ -84,7 +84,7 @@ class SceneLoaderTest {
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
         unknown key in an object     | - {type: sphere, center: [0, 0, 0], radus: 1}                   | s.yaml:8:39: | unknown key 'radus' in sphere; allowed: casts-shadows, center, material, radius, transform, type
-        unknown object type          | - {type: torus}                                                  | s.yaml:8:12: | torus'; allowed: box, cylinder, plane, sphere, triangle
+        unknown object type          | - {type: torus}                                                  | s.yaml:8:12: | torus'; allowed: box, cylinder, mesh, plane, sphere, triangle
         negative radius              | - {type: sphere, center: [0, 0, 0], radius: -1}                  | s.yaml:8:47: | 'radius' in sphere must be greater than 0, got -1
         zero radius                  | - {type: sphere, center: [0, 0, 0], radius: 0}                   | s.yaml:8:47: | greater than 0
         NaN coordinate               | - {type: sphere, center: [0, .nan, 0]}                           | s.yaml:8:32: | must be a finite number, got '.nan'
@@ -143,6 +143,35 @@ class SceneLoaderTest {
         assertMessage(error("# only a comment\n"), "s.yaml:", "empty");
         assertMessage(error("image: {width: 8}\n"), "s.yaml:1:1:", "no 'objects'");
         assertMessage(error("- just\n- a list\n"), "s.yaml:1:1:", "mapping");
+    }
+
+    @Test
+    void meshesLoadRelativeToTheSceneWithTheirMtlMaterials(@TempDir Path dir) throws IOException, SceneException {
+        Files.createDirectories(dir.resolve("models"));
+        Files.writeString(dir.resolve("models/quad.mtl"), "newmtl shiny\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 40\n");
+        Files.writeString(dir.resolve("models/quad.obj"), "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl shiny\nf 1 2 3 4\n");
+        Files.writeString(dir.resolve("scene.yaml"), "objects:\n  - {type: mesh, file: models/quad.obj, smooth: true, bvh: sah}\n");
+        World world = SceneLoader.load(dir.resolve("scene.yaml"));
+        raytracer.accel.MeshBVH mesh = (raytracer.accel.MeshBVH) world.objects().get(0);
+        assertEquals(2, mesh.mesh().triangleCount());
+        assertTrue(mesh.mesh().hasNormals(), "smooth: true computes vertex normals");
+        assertTrue(mesh.getMaterial() instanceof raytracer.materials.Phong, "Ks and Ns make a Phong material");
+        assertTrue(world.timings().keySet().stream().anyMatch(k -> k.startsWith("parse quad.obj")), world.timings().toString());
+        assertTrue(world.timings().keySet().stream().anyMatch(k -> k.startsWith("sah BVH of quad.obj")), world.timings().toString());
+    }
+
+    @Test
+    void meshErrorsNameTheSceneAndTheMeshFile(@TempDir Path dir) throws IOException {
+        Files.writeString(dir.resolve("bad.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 3\n");
+        Files.writeString(dir.resolve("a.yaml"), "objects:\n  - {type: mesh, file: missing.obj}\n");
+        Files.writeString(dir.resolve("b.yaml"), "objects:\n  - {type: mesh, file: bad.obj}\n");
+        Files.writeString(dir.resolve("c.yaml"), "objects:\n  - {type: mesh, file: bad.obj, bvh: kd-tree}\n");
+        SceneException missing = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("a.yaml")));
+        assertMessage(missing.getMessage(), dir.resolve("a.yaml") + ":2:", "missing.obj", "no such file");
+        SceneException bad = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("b.yaml")));
+        assertMessage(bad.getMessage(), dir.resolve("b.yaml") + ":2:", "bad.obj:3: vertex index 3 is out of range");
+        SceneException builder = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("c.yaml")));
+        assertMessage(builder.getMessage(), dir.resolve("c.yaml") + ":2:", "kd-tree", "median, sah");
     }
 
     @Test

@@ -1,0 +1,106 @@
+package raytracer.accel;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import raytracer.cameras.Pinhole;
+import raytracer.core.ShadeRec;
+import raytracer.core.ViewPlane;
+import raytracer.core.WorkerScratch;
+import raytracer.core.World;
+import raytracer.io.obj.ObjLoader;
+import raytracer.lights.Ambient;
+import raytracer.math.BBox;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Ray;
+import raytracer.math.Vector3D;
+import raytracer.shapes.mesh.Mesh;
+
+/**
+ * BVH traversal on the Stanford bunny and dragon (from ../shared/assets, or -Draytracer.assets):
+ * closest hit for camera rays through the mesh's bounding box, and any hit for shadow rays from
+ * points on the surface towards a light, for both builders. Reports rays per microsecond, one thread.
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.Throughput)
+@OutputTimeUnit(TimeUnit.MICROSECONDS)
+@Warmup(iterations = 3, time = 2)
+@Measurement(iterations = 5, time = 2)
+@Fork(value = 1, jvmArgs = "-Xmx1g")
+public class MeshTraversalBenchmark {
+    @Param({"stanford-bunny.obj", "stanford-dragon.obj.gz"})
+    public String mesh;
+
+    @Param({"median", "sah"})
+    public String builder;
+
+    private static final int RAYS = 4096;
+    private final Ray[] cameraRays = new Ray[RAYS];
+    private final Ray[] shadowRays = new Ray[RAYS];
+    private final double[] shadowLength = new double[RAYS];
+    private MeshBVH bvh;
+    private ShadeRec sr;
+    private int next;
+
+    @Setup
+    public void setUp() throws Exception {
+        String assets = System.getProperty("raytracer.assets", "../shared/assets");
+        Mesh m = ObjLoader.load(Path.of(assets, "meshes", mesh), false).mesh();
+        double[] bounds = MeshBVH.triangleBounds(m);
+        FlatBVH tree = builder.equals("sah") ? new SahBuilder(4).build(bounds) : new MedianSplitBuilder(4).build(bounds);
+        bvh = new MeshBVH(m, tree, List.of());
+        World world = new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 1, 1),
+            new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE));
+        sr = new WorkerScratch(world).shadeRec(0);
+        BBox box = m.bounds();
+        Point3D c = box.center();
+        double size = Math.max(box.x1() - box.x0(), box.y1() - box.y0());
+        Point3D eye = new Point3D(c.x(), c.y() + 0.2 * size, c.z() + 1.5 * size);
+        Point3D light = new Point3D(c.x() - size, c.y() + 2 * size, c.z() + size);
+        SplittableRandom r = new SplittableRandom(1);
+        int made = 0;
+        while (made < RAYS) {
+            double tx = r.nextDouble(box.x0(), box.x1());
+            double ty = r.nextDouble(box.y0(), box.y1());
+            Ray ray = new Ray().set(eye.x(), eye.y(), eye.z(), tx - eye.x(), ty - eye.y(), c.z() - eye.z());
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            if (!bvh.hit(ray, sr)) {
+                continue;
+            }
+            sr.complete(ray);
+            cameraRays[made] = ray;
+            double dx = light.x() - sr.hitPoint.x;
+            double dy = light.y() - sr.hitPoint.y;
+            double dz = light.z() - sr.hitPoint.z;
+            shadowLength[made] = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            shadowRays[made] = sr.spawnRay(dx / shadowLength[made], dy / shadowLength[made], dz / shadowLength[made], new Ray());
+            made++;
+        }
+    }
+
+    @Benchmark
+    public boolean closestHit() {
+        Ray ray = cameraRays[next++ & (RAYS - 1)];
+        sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+        return bvh.hit(ray, sr);
+    }
+
+    @Benchmark
+    public boolean anyHit() {
+        int i = next++ & (RAYS - 1);
+        return bvh.shadowHit(shadowRays[i], shadowLength[i], sr);
+    }
+}

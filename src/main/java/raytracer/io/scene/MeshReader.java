@@ -1,0 +1,75 @@
+package raytracer.io.scene;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import raytracer.accel.FlatBVH;
+import raytracer.accel.MedianSplitBuilder;
+import raytracer.accel.MeshBVH;
+import raytracer.accel.SahBuilder;
+import raytracer.core.GeometricObject;
+import raytracer.core.Material;
+import raytracer.core.World;
+import raytracer.io.obj.ObjException;
+import raytracer.io.obj.ObjLoader;
+import raytracer.io.obj.ObjMaterial;
+import raytracer.io.obj.ObjModel;
+import raytracer.materials.Matte;
+import raytracer.materials.Phong;
+import raytracer.math.RGBColor;
+
+/**
+ * A {@code mesh} object: an OBJ file under a BVH. Without a {@code material} key the file's MTL
+ * materials are used, mapped onto ours (Kd to a Lambertian, Ks and Ns to a Phong lobe).
+ */
+final class MeshReader {
+    /** Triangles per leaf of the median-split tree (the report's builder). */
+    static final int MEDIAN_LEAF_SIZE = 4;
+    static final int SAH_MAX_LEAF_SIZE = 4;
+
+    private MeshReader() {
+    }
+
+    static GeometricObject read(YamlObject o, Material override, World world) throws SceneException {
+        Path file = o.source().resolve(o.requiredString("file"));
+        boolean smooth = o.bool("smooth", false);
+        String builder = o.string("bvh", "median");
+        if (!builder.equals("median") && !builder.equals("sah")) {
+            throw o.source().error(o.raw("bvh"), "unknown bvh builder '" + builder + "'; allowed: median, sah");
+        }
+        long start = System.nanoTime();
+        ObjModel model;
+        try {
+            model = ObjLoader.load(file, smooth);
+        } catch (ObjException e) {
+            throw o.source().error(o.raw("file"), e.getMessage());
+        }
+        long parsed = System.nanoTime();
+        double[] bounds = MeshBVH.triangleBounds(model.mesh());
+        FlatBVH bvh = builder.equals("median") ? new MedianSplitBuilder(MEDIAN_LEAF_SIZE).build(bounds)
+                                               : new SahBuilder(SAH_MAX_LEAF_SIZE).build(bounds);
+        long built = System.nanoTime();
+        world.recordTiming("parse " + file.getFileName(), parsed - start);
+        world.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)", built - parsed);
+        model.warnings().forEach(world::addWarning);
+        List<Material> materials = new ArrayList<>();
+        if (override == null) {
+            for (ObjMaterial m : model.materials()) {
+                materials.add(fromMtl(m));
+            }
+        }
+        MeshBVH mesh = new MeshBVH(model.mesh(), bvh, materials);
+        mesh.setMaterial(override != null ? override
+                         : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
+        return mesh;
+    }
+
+    static Material fromMtl(ObjMaterial m) {
+        RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
+        RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
+        if (ks.max() > 0 && m.ns() > 0) {
+            return new Phong(MaterialReader.KA, 1, kd, 1, ks, m.ns(), false);
+        }
+        return new Matte(MaterialReader.KA, 1, kd);
+    }
+}
