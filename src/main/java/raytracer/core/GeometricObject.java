@@ -33,6 +33,15 @@ public abstract class GeometricObject {
     /** A box around the object; unbounded objects (planes) return an infinite box. */
     public abstract BBox boundingBox();
 
+    /** The end of most {@code hit} methods: records t for this leaf when it beats the closest hit so far. */
+    protected final boolean recordIfCloser(double t, ShadeRec sr) {
+        if (t < sr.t) {
+            sr.recordHit(t, this);
+            return true;
+        }
+        return false;
+    }
+
     public Material getMaterial() {
         return material;
     }

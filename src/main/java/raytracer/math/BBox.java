@@ -54,9 +54,4 @@ public record BBox(double x0, double y0, double z0, double x1, double y1, double
         return Math.max(Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.abs(y0), Math.abs(y1))),
                         Math.max(Math.abs(z0), Math.abs(z1)));
     }
-
-    /** Conservative slab test on (0, tMax); see {@link Slabs#overlap}. */
-    public boolean hit(Ray ray, double tMax) {
-        return Slabs.overlap(new double[] {x0, y0, z0, x1, y1, z1}, 0, ray, tMax);
-    }
 }

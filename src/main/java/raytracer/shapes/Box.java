@@ -58,12 +58,7 @@ public final class Box extends GeometricObject {
 
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
-        double t = slabs(ray, sr.t);
-        if (t < sr.t) {
-            sr.recordHit(t, this);
-            return true;
-        }
-        return false;
+        return recordIfCloser(slabs(ray, sr.t), sr);
     }
 
     @Override

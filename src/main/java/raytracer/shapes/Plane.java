@@ -49,11 +49,7 @@ public final class Plane extends GeometricObject {
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
         double t = distance(ray);
-        if (t > 0 && t < sr.t) {
-            sr.recordHit(t, this);
-            return true;
-        }
-        return false;
+        return t > 0 && recordIfCloser(t, sr);
     }
 
     @Override

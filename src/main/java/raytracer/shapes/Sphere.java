@@ -29,12 +29,7 @@ public final class Sphere extends GeometricObject {
 
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
-        double t = nearestRoot(ray, sr.t);
-        if (t < sr.t) {
-            sr.recordHit(t, this);
-            return true;
-        }
-        return false;
+        return recordIfCloser(nearestRoot(ray, sr.t), sr);
     }
 
     @Override

@@ -35,12 +35,7 @@ public final class Triangle extends GeometricObject {
         if (degenerate) {
             return false;
         }
-        double t = Watertight.intersect(ray, v, 0, 3, 6, sr.t, sr);
-        if (t < sr.t) {
-            sr.recordHit(t, this);
-            return true;
-        }
-        return false;
+        return recordIfCloser(Watertight.intersect(ray, v, 0, 3, 6, sr.t, sr), sr);
     }
 
     @Override
