@@ -6,13 +6,16 @@ import raytracer.brdf.PerfectSpecular;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.core.WorkerScratch;
+import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
 import raytracer.math.Rgb;
 
 /**
  * Phong shading plus a perfect mirror term (Suffern, section 24.3): the radiance traced along the
- * mirror direction, scaled by kr cr, is added to the direct light.
+ * mirror direction, scaled by kr cr, is added to the direct light. With {@code schlick} the
+ * reflected fraction grows towards grazing angles by Schlick's Fresnel approximation with kr as
+ * the reflectance at normal incidence (report section 3: the brown mirror sphere with 0.5).
  */
 public final class Reflective extends Material {
     private final Lambertian ambient;
@@ -20,14 +23,18 @@ public final class Reflective extends Material {
     private final GlossySpecular specular;
     private final PerfectSpecular mirror;
     private final RGBColor reflectance;
+    private final double kr;
+    private final boolean schlick;
 
     public Reflective(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp,
-                      double kr, RGBColor cr) {
+                      double kr, RGBColor cr, boolean schlick) {
+        this.kr = kr;
+        this.schlick = schlick;
         this.ambient = new Lambertian(ka, cd);
         this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, false);
         this.mirror = new PerfectSpecular(kr, cr);
-        this.reflectance = mirror.reflectance();
+        this.reflectance = schlick ? cr : mirror.reflectance();
     }
 
     @Override
@@ -43,7 +50,8 @@ public final class Reflective extends Material {
         scratch.secondaryRays++;
         Rgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
-        out.addProduct(incoming, reflectance, 1);
+        double fraction = schlick ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : 1;
+        out.addProduct(incoming, reflectance, fraction);
     }
 
     @Override

@@ -77,7 +77,7 @@ class ScaleRobustnessTest {
             Matrix4.translate(offset + s * 1.3, 0, offset).multiply(Matrix4.rotateY(35)));
         add(world, box, matte);
         add(world, new Sphere(new Point3D(offset, s * 0.5, offset + s * 1.6), s * 0.5),
-            new Reflective(0.1, 0.2, RGBColor.WHITE, 0.2, RGBColor.WHITE, 50, 0.7, RGBColor.WHITE));
+            new Reflective(0.1, 0.2, RGBColor.WHITE, 0.2, RGBColor.WHITE, 50, 0.7, RGBColor.WHITE, false));
         world.addLight(new PointLight(40 * s * s, RGBColor.WHITE, new Point3D(offset - s * 3, s * 5, offset + s * 4)));
         world.setTracer(Whitted::new);
         world.prepare();

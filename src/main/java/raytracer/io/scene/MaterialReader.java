@@ -3,6 +3,7 @@ package raytracer.io.scene;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.Material;
+import raytracer.materials.Dielectric;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
@@ -15,6 +16,7 @@ final class MaterialReader {
     static final double KS = 0.2;
     static final double EXPONENT = 20;
     static final double KR = 0.75;
+    static final double IOR = 1.5;
 
     private MaterialReader() {
     }
@@ -29,11 +31,17 @@ final class MaterialReader {
         Set<String> allowed = switch (kind) {
             case "matte" -> Set.of("type", "ka", "kd", "color");
             case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized");
-            case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color");
+            case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
+                                        "fresnel");
+            case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent");
             default -> throw source.error(YamlObject.typeNode(node),
-                "unknown material type '" + kind + "'; allowed: matte, phong, reflective");
+                "unknown material type '" + kind + "'; allowed: dielectric, matte, phong, reflective");
         };
         YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
+        if (kind.equals("dielectric")) {
+            return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
+                                  m.number("ks", 0, 0, false), m.number("exponent", 1000, 0, true));
+        }
         double ka = m.number("ka", KA, 0, false);
         double kd = m.number("kd", KD, 0, false);
         RGBColor cd = m.color("color", RGBColor.WHITE);
@@ -46,6 +54,11 @@ final class MaterialReader {
         if (kind.equals("phong")) {
             return new Phong(ka, kd, cd, ks, cs, exp, m.bool("normalized", false));
         }
-        return new Reflective(ka, kd, cd, ks, cs, exp, m.number("kr", KR, 0, false), m.color("reflect-color", RGBColor.WHITE));
+        String fresnel = m.string("fresnel", "none");
+        if (!fresnel.equals("none") && !fresnel.equals("schlick")) {
+            throw source.error(m.raw("fresnel"), "unknown fresnel '" + fresnel + "'; allowed: none, schlick");
+        }
+        return new Reflective(ka, kd, cd, ks, cs, exp, m.number("kr", KR, 0, false), m.color("reflect-color", RGBColor.WHITE),
+                              fresnel.equals("schlick"));
     }
 }

@@ -146,6 +146,21 @@ class SceneLoaderTest {
     }
 
     @Test
+    void glassAndFresnelMirrors() throws SceneException {
+        World world = SceneLoader.load("s.yaml", "materials:\n"
+            + "  glass: {type: dielectric, ior: 1.5, absorption: [0.1, 0, 0.2]}\n"
+            + "  brown: {type: reflective, kr: 0.5, fresnel: schlick, reflect-color: [0.6, 0.4, 0.2]}\n"
+            + "objects:\n  - {type: sphere, center: [0, 0, 0], material: glass}\n"
+            + "  - {type: sphere, center: [3, 0, 0], material: brown}\n");
+        assertTrue(world.objects().get(0).getMaterial() instanceof raytracer.materials.Dielectric);
+        assertTrue(world.objects().get(1).getMaterial().tracesSecondaryRays());
+        assertMessage(error("materials:\n  g: {type: dielectric, ior: 0}\n" + "objects: []\n"), "s.yaml:2:", "'ior'");
+        assertMessage(error("materials:\n  g: {type: dielectric, absorption: [0, -1, 0]}\nobjects: []\n"), "s.yaml:2:", "negative");
+        assertMessage(error("materials:\n  m: {type: reflective, fresnel: exact}\nobjects: []\n"), "s.yaml:2:", "'exact'", "none, schlick");
+        assertMessage(error("materials:\n  g: {type: dielectric, kd: 1}\nobjects: []\n"), "s.yaml:2:", "'kd'", "absorption, exponent, ior");
+    }
+
+    @Test
     void meshesLoadRelativeToTheSceneWithTheirMtlMaterials(@TempDir Path dir) throws IOException, SceneException {
         Files.createDirectories(dir.resolve("models"));
         Files.writeString(dir.resolve("models/quad.mtl"), "newmtl shiny\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 40\n");

@@ -1,0 +1,2 @@
+/** Transmission models (Suffern, chapter 27): the perfect, specular transmitter of smooth glass. */
+package raytracer.btdf;

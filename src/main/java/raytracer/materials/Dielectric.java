@@ -1,0 +1,82 @@
+package raytracer.materials;
+
+import raytracer.brdf.GlossySpecular;
+import raytracer.brdf.Lambertian;
+import raytracer.brdf.PerfectSpecular;
+import raytracer.btdf.PerfectTransmitter;
+import raytracer.core.Material;
+import raytracer.core.ShadeRec;
+import raytracer.core.WorkerScratch;
+import raytracer.math.Fresnel;
+import raytracer.math.RGBColor;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+
+/**
+ * Glass (report section 3; Suffern, chapter 28): the exact Fresnel reflectance R splits the light
+ * into a mirror ray weighted R and a refracted ray weighted 1 - R (R = 1 past the critical angle),
+ * plus Phong highlights from the lights. Beer's law: a hit seen from inside the medium ends a
+ * segment travelled through it, so the radiance found there is multiplied by exp(-sigma_a t), per
+ * channel. That covers refracted rays, internal reflections and camera rays starting inside alike.
+ *
+ * <p>Radiance is not scaled by (eta_t / eta_i)^2 when crossing: a camera path that enters the
+ * medium also leaves it, where the factors cancel, and leaving them out keeps paths cut short by
+ * the recursion limit from looking brighter than they are.
+ */
+public final class Dielectric extends Material {
+    private final Lambertian ambient;
+    private final Lambertian diffuse;
+    private final GlossySpecular specular;
+    private final PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
+    private final PerfectTransmitter transmitter;
+    private final RGBColor absorption;
+
+    public Dielectric(double ior, RGBColor absorption, double ks, double exp) {
+        this.transmitter = new PerfectTransmitter(ior);
+        this.absorption = absorption;
+        this.ambient = new Lambertian(0, RGBColor.BLACK);
+        this.diffuse = new Lambertian(0, RGBColor.BLACK);
+        this.specular = new GlossySpecular(ks, RGBColor.WHITE, exp, false);
+    }
+
+    @Override
+    public void shade(ShadeRec sr, Rgb out) {
+        DirectLighting.shade(sr, ambient, diffuse, specular, out);
+        int next = sr.depth + 1;
+        if (next <= sr.world.viewPlane().maxDepth()) {
+            WorkerScratch scratch = sr.scratch;
+            double cosI = sr.normal.dot(sr.wo);
+            double eta = transmitter.relativeEta(sr);
+            double r = Fresnel.dielectric(cosI, 1, 1 / eta);
+            Vec3 wi = sr.wi;
+            Rgb incoming = scratch.color(next);
+            // the mirror part, R (all of it under total internal reflection)
+            mirror.sampleDirection(sr, sr.wo, wi);
+            trace(sr, wi, next, scratch, incoming);
+            out.addProduct(incoming, RGBColor.WHITE, r);
+            // the refracted part, 1 - R
+            if (r < 1 && transmitter.sampleDirection(sr, sr.wo, wi)) {
+                trace(sr, wi, next, scratch, incoming);
+                out.addProduct(incoming, RGBColor.WHITE, 1 - r);
+            }
+        }
+        if (!sr.frontFace) {
+            double t = sr.t;
+            out.r *= Math.exp(-absorption.r() * t);
+            out.g *= Math.exp(-absorption.g() * t);
+            out.b *= Math.exp(-absorption.b() * t);
+        }
+    }
+
+    private static void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out) {
+        Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
+        scratch.secondaryRays++;
+        sr.world.tracer().traceRay(ray, depth, scratch, out);
+    }
+
+    @Override
+    public boolean tracesSecondaryRays() {
+        return true;
+    }
+}
