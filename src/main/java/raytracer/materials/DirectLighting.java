@@ -19,6 +19,14 @@ final class DirectLighting {
 
     /** Writes the reflected direct radiance into {@code out}; {@code specular} may be null. */
     static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, Rgb out) {
+        shade(sr, ambient, diffuse, specular, false, out);
+    }
+
+    /**
+     * As above; {@code seedCompatible} reproduces the report's two quirks (brdf-params.md): the
+     * diffuse term without its 1/pi and the specular term without cos(theta_i).
+     */
+    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, boolean seedCompatible, Rgb out) {
         WorkerScratch scratch = sr.scratch;
         Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
         Rgb f = scratch.brdfScratch;
@@ -43,12 +51,20 @@ final class DirectLighting {
                 }
             }
             diffuse.f(sr, wo, wi, f);
+            light.L(sr, incident);
+            if (seedCompatible) {
+                out.addProduct(f, incident, Math.PI * nDotWi);
+                if (specular != null) {
+                    specular.f(sr, wo, wi, f);
+                    out.addProduct(f, incident, 1);
+                }
+                continue;
+            }
             if (specular != null) {
                 Rgb fs = scratch.specularScratch;
                 specular.f(sr, wo, wi, fs);
                 f.add(fs);
             }
-            light.L(sr, incident);
             out.addProduct(f, incident, nDotWi);
         }
     }

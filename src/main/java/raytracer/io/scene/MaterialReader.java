@@ -2,8 +2,13 @@ package raytracer.io.scene;
 
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.brdf.BlinnPhong;
+import raytracer.brdf.FittedPreset;
+import raytracer.brdf.Ward;
+import raytracer.core.BRDF;
 import raytracer.core.Material;
 import raytracer.materials.Dielectric;
+import raytracer.materials.Fitted;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
@@ -26,6 +31,27 @@ final class MaterialReader {
         return new Matte(KA, KD, RGBColor.gray(0.8));
     }
 
+    /** A fitted model: a preset by name, or explicit rho-d, rho-s and alpha / exponent. */
+    private static Material fitted(YamlObject m, String kind) throws SceneException {
+        FittedPreset.Model model = kind.equals("ward") ? FittedPreset.Model.WARD
+            : kind.equals("ward-duer") ? FittedPreset.Model.WARD_DUER : FittedPreset.Model.BLINN_PHONG;
+        double ka = m.number("ka", 0, 0, false);
+        boolean seed = m.bool("seed-compatible", false);
+        if (m.has("preset")) {
+            try {
+                return Fitted.of(FittedPreset.of(m.requiredString("preset"), model), ka, seed);
+            } catch (IllegalArgumentException e) {
+                throw m.source().error(m.raw("preset"), e.getMessage());
+            }
+        }
+        RGBColor rhoD = m.color("rho-d", RGBColor.gray(0.5));
+        RGBColor rhoS = m.color("rho-s", RGBColor.gray(0.1));
+        BRDF lobe = model == FittedPreset.Model.BLINN_PHONG
+            ? new BlinnPhong(rhoS, m.number("exponent", 100, 0, false))
+            : new Ward(rhoS, m.number("alpha", 0.1, 0, true), model == FittedPreset.Model.WARD_DUER);
+        return new Fitted(rhoD, lobe, ka, seed);
+    }
+
     static Material read(Source source, String name, Node node) throws SceneException {
         String kind = YamlObject.peekType(source, node, "material '" + name + "'", "matte");
         Set<String> allowed = switch (kind) {
@@ -34,10 +60,15 @@ final class MaterialReader {
             case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
                                         "fresnel");
             case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent");
+            case "ward", "ward-duer" -> Set.of("type", "preset", "rho-d", "rho-s", "alpha", "ka", "seed-compatible");
+            case "blinn-phong" -> Set.of("type", "preset", "rho-d", "rho-s", "exponent", "ka", "seed-compatible");
             default -> throw source.error(YamlObject.typeNode(node),
-                "unknown material type '" + kind + "'; allowed: dielectric, matte, phong, reflective");
+                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, matte, phong, reflective, ward, ward-duer");
         };
         YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
+        if (kind.startsWith("ward") || kind.equals("blinn-phong")) {
+            return fitted(m, kind);
+        }
         if (kind.equals("dielectric")) {
             return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
                                   m.number("ks", 0, 0, false), m.number("exponent", 1000, 0, true));

@@ -146,6 +146,20 @@ class SceneLoaderTest {
     }
 
     @Test
+    void fittedModelsByPresetOrValues() throws SceneException {
+        World world = SceneLoader.load("s.yaml", "materials:\n"
+            + "  a: {type: ward, preset: nickel}\n  b: {type: ward-duer, preset: delrin, seed-compatible: true}\n"
+            + "  c: {type: blinn-phong, rho-d: [0.3, 0.2, 0.1], rho-s: [0.05, 0.05, 0.05], exponent: 80}\n"
+            + "objects:\n  - {type: sphere, center: [0, 0, 0], material: a}\n  - {type: sphere, center: [2, 0, 0], material: b}\n"
+            + "  - {type: sphere, center: [4, 0, 0], material: c}\n");
+        assertTrue(world.objects().stream().allMatch(o -> o.getMaterial() instanceof raytracer.materials.Fitted));
+        assertMessage(error("materials:\n  a: {type: ward, preset: gold}\nobjects: []\n"), "s.yaml:2:", "'gold'",
+                      "delrin, green-acrylic, nickel");
+        assertMessage(error("materials:\n  a: {type: ward, exponent: 3}\nobjects: []\n"), "s.yaml:2:", "'exponent'", "alpha");
+        assertMessage(error("materials:\n  a: {type: ward, alpha: 0}\nobjects: []\n"), "s.yaml:2:", "'alpha'");
+    }
+
+    @Test
     void glassAndFresnelMirrors() throws SceneException {
         World world = SceneLoader.load("s.yaml", "materials:\n"
             + "  glass: {type: dielectric, ior: 1.5, absorption: [0.1, 0, 0.2]}\n"

@@ -1,0 +1,42 @@
+package raytracer.brdf;
+
+import raytracer.core.BRDF;
+import raytracer.core.ShadeRec;
+import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+
+/**
+ * The normalised Blinn-Phong lobe around the half vector, as Ngan et al. fit it (brdf-params.md):
+ * f_s = rho_s (n + 2) / (2 pi) cos^n(theta_h). Zero when either direction is below the surface.
+ */
+public final class BlinnPhong implements BRDF {
+    private final RGBColor rhoS;
+    private final double exponent;
+
+    public BlinnPhong(RGBColor rhoS, double exponent) {
+        if (!(exponent >= 0)) {
+            throw new IllegalArgumentException("Blinn-Phong exponent must be 0 or more, got " + exponent);
+        }
+        this.rhoS = rhoS;
+        this.exponent = exponent;
+    }
+
+    @Override
+    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+        out.set(rhoS).scale(value(sr.normal, wo, wi));
+    }
+
+    double value(Vec3 n, Vec3 wo, Vec3 wi) {
+        if (n.dot(wi) <= 0 || n.dot(wo) <= 0) {
+            return 0;
+        }
+        double cosH = HalfVector.cosThetaH(n, wi, wo);
+        return cosH <= 0 ? 0 : (exponent + 2) / (2 * Math.PI) * Math.pow(cosH, exponent);
+    }
+
+    @Override
+    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+        out.setBlack();
+    }
+}

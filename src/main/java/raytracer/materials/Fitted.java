@@ -1,0 +1,38 @@
+package raytracer.materials;
+
+import raytracer.brdf.FittedPreset;
+import raytracer.brdf.Lambertian;
+import raytracer.core.BRDF;
+import raytracer.core.Material;
+import raytracer.core.ShadeRec;
+import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
+
+/**
+ * A measured material as a fitted model (report section 2.2, figure 2): Lambertian rho_d / pi plus
+ * a Ward, Ward-Duer or Blinn-Phong lobe, lit by the scene's lights, with an ambient term ka rho_d.
+ * {@code seedCompatible} reproduces the report's own shading (no 1/pi, no cos on the lobe) so that
+ * figure 2's brightness can be matched.
+ */
+public final class Fitted extends Material {
+    private final Lambertian ambient;
+    private final Lambertian diffuse;
+    private final BRDF specular;
+    private final boolean seedCompatible;
+
+    public Fitted(RGBColor rhoD, BRDF specular, double ka, boolean seedCompatible) {
+        this.ambient = new Lambertian(ka, rhoD);
+        this.diffuse = new Lambertian(1, rhoD);
+        this.specular = specular;
+        this.seedCompatible = seedCompatible;
+    }
+
+    public static Fitted of(FittedPreset preset, double ka, boolean seedCompatible) {
+        return new Fitted(preset.rhoD(), preset.specular(), ka, seedCompatible);
+    }
+
+    @Override
+    public void shade(ShadeRec sr, Rgb out) {
+        DirectLighting.shade(sr, ambient, diffuse, specular, seedCompatible, out);
+    }
+}
