@@ -17,6 +17,36 @@ public abstract class Light {
     /** Writes the incident radiance (or, for point lights, the irradiance factor I / r^2) into {@code out}. */
     public abstract void L(ShadeRec sr, Rgb out);
 
+    /** True for lights with a surface to sample (area lights); false for points and directions. */
+    public boolean hasExtent() {
+        return false;
+    }
+
+    /**
+     * How many samples this light takes per shaded point: 1 for point and directional lights, the
+     * configured number for area lights (Suffern, chapter 18).
+     */
+    public int sampleCount() {
+        return 1;
+    }
+
+    /**
+     * Picks the point of the light for the sample ({@code u}, {@code v}) in [0,1)^2 and writes the
+     * unit direction towards it into {@code wi}; returns the distance. Lights without extent ignore
+     * the sample.
+     */
+    public double sample(ShadeRec sr, double u, double v, Vec3 wi) {
+        return getDirection(sr, wi);
+    }
+
+    /**
+     * The Monte Carlo weight of the last sample: the geometry term over the sample's density,
+     * cos(theta_light) / d^2 / pdf_area for an area light; 1 for lights without extent.
+     */
+    public double geometryOverPdf(ShadeRec sr) {
+        return 1;
+    }
+
     /** True when something casts a shadow on the hit along {@code shadowRay} before the light. */
     public boolean inShadow(Ray shadowRay, double distance, ShadeRec sr) {
         return sr.world.shadowHit(shadowRay, distance, sr);

@@ -68,6 +68,9 @@ public final class ShadeRec {
     /** Shading scratch: unit direction to the viewer and to the light. */
     public final Vec3 wo = new Vec3();
     public final Vec3 wi = new Vec3();
+    /** The point and unit normal of the last area-light sample. */
+    public final Vec3 lightPoint = new Vec3();
+    public final Vec3 lightNormal = new Vec3();
 
     public ShadeRec(World world, WorkerScratch scratch) {
         this.world = world;

@@ -25,6 +25,9 @@ public final class WorkerScratch {
     public final double[] sampleY;
     public final double[] lensX;
     public final double[] lensY;
+    /** Sample pattern for the area light being shaded. */
+    public final double[] lightX;
+    public final double[] lightY;
 
     public long primaryRays;
     public long secondaryRays;
@@ -47,6 +50,12 @@ public final class WorkerScratch {
         sampleY = new double[n];
         lensX = new double[n];
         lensY = new double[n];
+        int lightSamples = 1;
+        for (Light light : world.lights()) {
+            lightSamples = Math.max(lightSamples, world.viewPlane().sampler().supportedCount(light.sampleCount()));
+        }
+        lightX = new double[lightSamples];
+        lightY = new double[lightSamples];
     }
 
     /** Bounding-volume tests made by all rays of this worker so far. */

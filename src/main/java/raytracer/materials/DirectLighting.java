@@ -38,34 +38,58 @@ final class DirectLighting {
 
         Vec3 wi = sr.wi;
         for (Light light : sr.world.lights()) {
-            double distance = light.getDirection(sr, wi);
-            double nDotWi = sr.normal.dot(wi);
-            // the geometric normal decides which side the light is on, so bumped normals do not leak
-            if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
-                continue;
+            int n = light.sampleCount();
+            boolean sampled = light.hasExtent();
+            if (sampled) {
+                // a fresh stratified pattern per light and point (Suffern, section 18.5)
+                n = sr.world.viewPlane().sampler().supportedCount(n);
+                sr.world.viewPlane().sampler().generate(n, scratch.rng, scratch.lightX, scratch.lightY);
             }
-            if (light.castsShadows()) {
-                Ray shadowRay = sr.spawnRay(wi.x, wi.y, wi.z, scratch.shadowRay);
-                if (light.inShadow(shadowRay, distance, sr)) {
-                    continue;
-                }
+            for (int s = 0; s < n; s++) {
+                double u = sampled ? scratch.lightX[s] : 0.5;
+                double v = sampled ? scratch.lightY[s] : 0.5;
+                addSample(sr, light, light.sample(sr, u, v, wi), diffuse, specular, seedCompatible, 1.0 / n, out);
             }
-            diffuse.f(sr, wo, wi, f);
-            light.L(sr, incident);
-            if (seedCompatible) {
-                out.addProduct(f, incident, Math.PI * nDotWi);
-                if (specular != null) {
-                    specular.f(sr, wo, wi, f);
-                    out.addProduct(f, incident, 1);
-                }
-                continue;
-            }
-            if (specular != null) {
-                Rgb fs = scratch.specularScratch;
-                specular.f(sr, wo, wi, fs);
-                f.add(fs);
-            }
-            out.addProduct(f, incident, nDotWi);
         }
+    }
+
+    /** Adds one light sample in direction sr.wi, weighted by {@code weight} (1 / samples). */
+    private static void addSample(ShadeRec sr, Light light, double distance, BRDF diffuse, BRDF specular,
+                                  boolean seedCompatible, double weight, Rgb out) {
+        WorkerScratch scratch = sr.scratch;
+        Vec3 wi = sr.wi;
+        double nDotWi = sr.normal.dot(wi);
+        // the geometric normal decides which side the light is on, so bumped normals do not leak
+        if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
+            return;
+        }
+        double g = light.geometryOverPdf(sr) * weight;
+        if (!(g > 0)) {
+            return;
+        }
+        if (light.castsShadows()) {
+            Ray shadowRay = sr.spawnRay(wi.x, wi.y, wi.z, scratch.shadowRay);
+            if (light.inShadow(shadowRay, distance, sr)) {
+                return;
+            }
+        }
+        Rgb f = scratch.brdfScratch;
+        Rgb incident = scratch.lightScratch;
+        diffuse.f(sr, sr.wo, wi, f);
+        light.L(sr, incident);
+        if (seedCompatible) {
+            out.addProduct(f, incident, Math.PI * nDotWi * g);
+            if (specular != null) {
+                specular.f(sr, sr.wo, wi, f);
+                out.addProduct(f, incident, g);
+            }
+            return;
+        }
+        if (specular != null) {
+            Rgb fs = scratch.specularScratch;
+            specular.f(sr, sr.wo, wi, fs);
+            f.add(fs);
+        }
+        out.addProduct(f, incident, nDotWi * g);
     }
 }

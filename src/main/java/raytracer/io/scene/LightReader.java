@@ -2,17 +2,29 @@ package raytracer.io.scene;
 
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.GeometricObject;
 import raytracer.core.Light;
+import raytracer.core.World;
+import raytracer.lights.AreaLight;
 import raytracer.lights.Directional;
 import raytracer.lights.PointLight;
+import raytracer.materials.Emissive;
+import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
+import raytracer.math.Vector3D;
+import raytracer.shapes.Disk;
+import raytracer.shapes.Rectangle;
+import raytracer.shapes.Sphere;
 
 /** One entry of the {@code lights} list: point or directional. */
 final class LightReader {
     private LightReader() {
     }
 
-    static Light read(Source source, Node node) throws SceneException {
+    static final int AREA_SAMPLES = 16;
+
+    /** Reads a light; an area light that is {@code visible} also adds its emitting shape to the world. */
+    static Light read(Source source, Node node, World world) throws SceneException {
         String kind = YamlObject.peekType(source, node, "light", null);
         YamlObject common = null;
         Light light = switch (kind) {
@@ -32,9 +44,68 @@ final class LightReader {
                     throw source.error(l.raw("direction"), e.getMessage());
                 }
             }
-            default -> throw source.error(YamlObject.typeNode(node), "unknown light type '" + kind + "'; allowed: directional, point");
+            case "rectangle", "disk", "sphere" -> {
+                common = new YamlObject(source, node, kind + " light", areaKeys(kind));
+                yield area(common, kind, world);
+            }
+            default -> throw source.error(YamlObject.typeNode(node),
+                "unknown light type '" + kind + "'; allowed: directional, disk, point, rectangle, sphere");
         };
         light.setCastsShadows(common.bool("shadows", true));
+        return light;
+    }
+
+    private static Set<String> areaKeys(String kind) {
+        Set<String> keys = new java.util.HashSet<>(Set.of("type", "radiance", "color", "samples", "visible", "shadows"));
+        keys.addAll(switch (kind) {
+            case "rectangle" -> Set.of("corner", "edge-a", "edge-b");
+            case "disk" -> Set.of("center", "normal", "radius");
+            default -> Set.of("center", "radius");
+        });
+        return keys;
+    }
+
+    /**
+     * An area light of radiance {@code radiance color}; the emitting shape, if visible, is an
+     * emissive object that casts no shadow (the light's own samples lie on it).
+     */
+    private static Light area(YamlObject l, String kind, World world) throws SceneException {
+        double ls = l.number("radiance", 1, 0, false);
+        RGBColor color = l.color("color", RGBColor.WHITE);
+        int samples = l.integer("samples", AREA_SAMPLES, 1);
+        Light light;
+        GeometricObject shape;
+        try {
+            switch (kind) {
+                case "rectangle" -> {
+                    Point3D corner = l.requiredPoint("corner");
+                    Vector3D a = l.requiredVector("edge-a");
+                    Vector3D b = l.requiredVector("edge-b");
+                    light = AreaLight.rectangle(corner, a, b, ls, color, samples);
+                    shape = new Rectangle(corner, a, b);
+                }
+                case "disk" -> {
+                    Point3D center = l.requiredPoint("center");
+                    Vector3D normal = l.requiredVector("normal");
+                    double radius = l.number("radius", 1, 0, true);
+                    light = AreaLight.disk(center, normal, radius, ls, color, samples);
+                    shape = new Disk(center, normal, radius);
+                }
+                default -> {
+                    Point3D center = l.requiredPoint("center");
+                    double radius = l.number("radius", 1, 0, true);
+                    light = AreaLight.sphere(center, radius, ls, color, samples);
+                    shape = new Sphere(center, radius);
+                }
+            }
+        } catch (IllegalArgumentException e) {
+            throw l.source().error(l.node(), e.getMessage());
+        }
+        if (l.bool("visible", true)) {
+            shape.setMaterial(new Emissive(ls, color));
+            shape.setCastsShadows(false);
+            world.addObject(shape);
+        }
         return light;
     }
 }

@@ -91,7 +91,7 @@ public final class SceneLoader {
         }
         Map<String, Material> materials = readMaterials(source, scene);
         for (Node light : scene.list("lights")) {
-            world.addLight(LightReader.read(source, light));
+            world.addLight(LightReader.read(source, light, world));
         }
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");

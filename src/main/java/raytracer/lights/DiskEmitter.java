@@ -1,0 +1,43 @@
+package raytracer.lights;
+
+import raytracer.math.Point3D;
+import raytracer.math.SampleMapping;
+import raytracer.math.Vec3;
+import raytracer.math.Vector3D;
+
+/** A disk emitting on the side its normal points to; sampled through the concentric map. */
+final class DiskEmitter implements Emitter {
+    private final Point3D center;
+    private final Vector3D normal;
+    private final Vector3D e1;
+    private final Vector3D e2;
+    private final double radius;
+
+    DiskEmitter(Point3D center, Vector3D normal, double radius) {
+        if (!(radius > 0) || !(normal.length() > 0)) {
+            throw new IllegalArgumentException("a disk light needs a positive radius and a non-zero normal");
+        }
+        this.center = center;
+        this.normal = normal.normalize();
+        Vector3D helper = Math.abs(this.normal.x()) > 0.9 ? Vector3D.UP : new Vector3D(1, 0, 0);
+        this.e1 = helper.cross(this.normal).normalize();
+        this.e2 = this.normal.cross(e1);
+        this.radius = radius;
+    }
+
+    @Override
+    public void sample(double u, double v, Vec3 point, Vec3 n) {
+        // the point's disk coordinates go through n first, which is overwritten right after
+        SampleMapping.toUnitDisk(u, v, n);
+        double x = n.x * radius;
+        double y = n.y * radius;
+        point.set(center.x() + x * e1.x() + y * e2.x(), center.y() + x * e1.y() + y * e2.y(),
+                  center.z() + x * e1.z() + y * e2.z());
+        n.set(normal.x(), normal.y(), normal.z());
+    }
+
+    @Override
+    public double area() {
+        return Math.PI * radius * radius;
+    }
+}

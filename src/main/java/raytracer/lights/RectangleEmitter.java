@@ -1,0 +1,37 @@
+package raytracer.lights;
+
+import raytracer.math.Point3D;
+import raytracer.math.Vec3;
+import raytracer.math.Vector3D;
+
+/** A parallelogram corner + u a + v b; it emits on the side of a x b. */
+final class RectangleEmitter implements Emitter {
+    private final Point3D corner;
+    private final Vector3D a;
+    private final Vector3D b;
+    private final Vector3D normal;
+    private final double area;
+
+    RectangleEmitter(Point3D corner, Vector3D a, Vector3D b) {
+        Vector3D n = a.cross(b);
+        if (!(n.length() > 0) || !n.isFinite()) {
+            throw new IllegalArgumentException("a rectangle light needs two non-parallel edges");
+        }
+        this.corner = corner;
+        this.a = a;
+        this.b = b;
+        this.area = n.length();
+        this.normal = n.normalize();
+    }
+
+    @Override
+    public void sample(double u, double v, Vec3 point, Vec3 n) {
+        point.set(corner.x() + u * a.x() + v * b.x(), corner.y() + u * a.y() + v * b.y(), corner.z() + u * a.z() + v * b.z());
+        n.set(normal.x(), normal.y(), normal.z());
+    }
+
+    @Override
+    public double area() {
+        return area;
+    }
+}

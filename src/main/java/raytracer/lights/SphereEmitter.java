@@ -1,0 +1,36 @@
+package raytracer.lights;
+
+import raytracer.math.Point3D;
+import raytracer.math.Vec3;
+
+/**
+ * A sphere emitting outward, sampled uniformly over its whole area (z = 1 - 2u, phi = 2 pi v):
+ * points on the far side get cos(theta_light) below 0 and weigh nothing, so the estimate stays
+ * unbiased, if noisier than sampling the visible cap.
+ */
+final class SphereEmitter implements Emitter {
+    private final Point3D center;
+    private final double radius;
+
+    SphereEmitter(Point3D center, double radius) {
+        if (!(radius > 0)) {
+            throw new IllegalArgumentException("a sphere light needs a positive radius, got " + radius);
+        }
+        this.center = center;
+        this.radius = radius;
+    }
+
+    @Override
+    public void sample(double u, double v, Vec3 point, Vec3 n) {
+        double z = 1 - 2 * u;
+        double r = Math.sqrt(Math.max(0, 1 - z * z));
+        double phi = 2 * Math.PI * v;
+        n.set(r * Math.cos(phi), r * Math.sin(phi), z);
+        point.set(center.x() + radius * n.x, center.y() + radius * n.y, center.z() + radius * n.z);
+    }
+
+    @Override
+    public double area() {
+        return 4 * Math.PI * radius * radius;
+    }
+}

@@ -1,0 +1,94 @@
+package raytracer.lights;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import raytracer.cameras.Orthographic;
+import raytracer.core.Light;
+import raytracer.core.ViewPlane;
+import raytracer.core.World;
+import raytracer.image.Film;
+import raytracer.materials.Matte;
+import raytracer.math.Normal;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Vector3D;
+import raytracer.render.Renderer;
+import raytracer.samplers.MultiJittered;
+import raytracer.shapes.Plane;
+import raytracer.tracers.RayCast;
+
+/**
+ * Area lights are unbiased: a white Lambertian floor (radiance = E / pi) under a light must average
+ * to the analytic irradiance. 900 pixels looking at (almost) the same point give 900 independent
+ * estimates, since each pixel draws its own samples.
+ */
+class AreaLightTest {
+    private static final int SIZE = 30;
+
+    /** Mean and standard error of the pixel values. */
+    private static double[] estimate(Light light) {
+        World world = new World(new ViewPlane(SIZE, SIZE, 1, new MultiJittered(), 0, 1),
+            new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1e-6), new Ambient(0, RGBColor.WHITE));
+        Plane floor = new Plane(Point3D.ORIGIN, new Normal(0, 1, 0));
+        floor.setMaterial(new Matte(0, 1, RGBColor.WHITE));
+        world.addObject(floor);
+        world.addLight(light);
+        world.setTracer(RayCast::new);
+        world.prepare();
+        Film film = new Film(SIZE, SIZE);
+        new Renderer(world, 2, 7).render(film);
+        double sum = 0;
+        double sum2 = 0;
+        for (int y = 0; y < SIZE; y++) {
+            for (int x = 0; x < SIZE; x++) {
+                double v = film.get(x, y, 0);
+                sum += v;
+                sum2 += v * v;
+            }
+        }
+        int n = SIZE * SIZE;
+        double mean = sum / n;
+        double variance = Math.max(0, sum2 / n - mean * mean);
+        return new double[] {mean, Math.sqrt(variance / n)};
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 16})
+    void diskLightMatchesTheAnalyticIrradiance(int samples) {
+        double le = 3;
+        double radius = 1;
+        double height = 2;
+        // on the axis of a disk: E = pi Le R^2 / (h^2 + R^2); radiance of a white Lambertian = E / pi
+        double expected = le * radius * radius / (height * height + radius * radius);
+        double[] e = estimate(AreaLight.disk(new Point3D(0, height, 0), new Vector3D(0, -1, 0), radius, le, RGBColor.WHITE, samples));
+        assertEquals(expected, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
+        assertTrue(e[1] < 0.02 * expected, "the estimate should be reasonably precise: " + e[1]);
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 16})
+    void sphereLightMatchesTheAnalyticIrradiance(int samples) {
+        double le = 2;
+        double radius = 0.5;
+        double distance = 3;
+        // a sphere wholly above the horizon, straight above: E = pi Le (R / d)^2
+        double expected = le * radius * radius / (distance * distance);
+        double[] e = estimate(AreaLight.sphere(new Point3D(0, distance, 0), radius, le, RGBColor.WHITE, samples));
+        assertEquals(expected, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {16})
+    void rectangleLightFacingAwayGivesNothing(int samples) {
+        // emitting upwards from above the floor: the floor sees only its back
+        double[] e = estimate(AreaLight.rectangle(new Point3D(-1, 2, -1), new Vector3D(0, 0, 2), new Vector3D(2, 0, 0),
+                                                  5, RGBColor.WHITE, samples));
+        assertEquals(0, e[0], 0);
+        double[] facing = estimate(AreaLight.rectangle(new Point3D(-1, 2, -1), new Vector3D(2, 0, 0), new Vector3D(0, 0, 2),
+                                                       5, RGBColor.WHITE, samples));
+        assertTrue(facing[0] > 0.5, "facing down it lights the floor: " + facing[0]);
+    }
+}
