@@ -127,7 +127,7 @@ class SceneLoaderTest {
         assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
         assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
         assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: spot}")),
-                      "s.yaml:5:", "spot", "directional, point");
+                      "s.yaml:5:", "spot", "directional, disk, point, rectangle, sphere");
         assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: point}")),
                       "s.yaml:5:", "needs the key 'position'");
         assertMessage(error(BASE.replace("{type: phong, color: [1, 0, 0]}", "{type: phong, exponent: 0}")),
