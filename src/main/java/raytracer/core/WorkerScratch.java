@@ -56,6 +56,8 @@ public final class WorkerScratch {
         }
         lightX = new double[lightSamples];
         lightY = new double[lightSamples];
+        patternX = new double[levels][];
+        patternY = new double[levels][];
     }
 
     /** Bounding-volume tests made by all rays of this worker so far. */
@@ -65,6 +67,26 @@ public final class WorkerScratch {
             sum += sr.boxTests;
         }
         return sum;
+    }
+
+    private final double[][] patternX;
+    private final double[][] patternY;
+
+    /**
+     * Sample buffers for a material at {@code depth} (glossy rays), each one per depth so that the
+     * recursion does not overwrite a pattern still in use; they grow once to the largest count.
+     */
+    public double[] patternX(int depth, int n) {
+        if (patternX[depth] == null || patternX[depth].length < n) {
+            patternX[depth] = new double[n];
+            patternY[depth] = new double[n];
+        }
+        return patternX[depth];
+    }
+
+    /** The y buffer paired with {@link #patternX}; call that first. */
+    public double[] patternY(int depth) {
+        return patternY[depth];
     }
 
     /** The hit record for a ray traced at {@code depth}. */

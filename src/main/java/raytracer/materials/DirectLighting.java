@@ -27,6 +27,15 @@ final class DirectLighting {
      * diffuse term without its 1/pi and the specular term without cos(theta_i).
      */
     static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, boolean seedCompatible, Rgb out) {
+        shade(sr, ambient, diffuse, specular, seedCompatible, true, out);
+    }
+
+    /**
+     * As above; without {@code specularFromAreaLights} area lights add only their diffuse term,
+     * for materials whose traced glossy rays already find the lights' surfaces (SPEC section 2).
+     */
+    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, boolean seedCompatible,
+                      boolean specularFromAreaLights, Rgb out) {
         WorkerScratch scratch = sr.scratch;
         Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
         Rgb f = scratch.brdfScratch;
@@ -48,7 +57,8 @@ final class DirectLighting {
             for (int s = 0; s < n; s++) {
                 double u = sampled ? scratch.lightX[s] : 0.5;
                 double v = sampled ? scratch.lightY[s] : 0.5;
-                addSample(sr, light, light.sample(sr, u, v, wi), diffuse, specular, seedCompatible, 1.0 / n, out);
+                BRDF lobe = sampled && !specularFromAreaLights ? null : specular;
+                addSample(sr, light, light.sample(sr, u, v, wi), diffuse, lobe, seedCompatible, 1.0 / n, out);
             }
         }
     }

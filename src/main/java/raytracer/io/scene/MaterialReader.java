@@ -9,6 +9,7 @@ import raytracer.core.BRDF;
 import raytracer.core.Material;
 import raytracer.materials.Dielectric;
 import raytracer.materials.Fitted;
+import raytracer.materials.GlossyReflector;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
@@ -22,6 +23,7 @@ final class MaterialReader {
     static final double EXPONENT = 20;
     static final double KR = 0.75;
     static final double IOR = 1.5;
+    static final int GLOSSY_SAMPLES = 10;
 
     private MaterialReader() {
     }
@@ -60,10 +62,11 @@ final class MaterialReader {
             case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
                                         "fresnel");
             case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent");
+            case "glossy" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "samples", "normalized");
             case "ward", "ward-duer" -> Set.of("type", "preset", "rho-d", "rho-s", "alpha", "ka", "seed-compatible");
             case "blinn-phong" -> Set.of("type", "preset", "rho-d", "rho-s", "exponent", "ka", "seed-compatible");
             default -> throw source.error(YamlObject.typeNode(node),
-                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, matte, phong, reflective, ward, ward-duer");
+                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, glossy, matte, phong, reflective, ward, ward-duer");
         };
         YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
         if (kind.startsWith("ward") || kind.equals("blinn-phong")) {
@@ -84,6 +87,9 @@ final class MaterialReader {
         double exp = m.number("exponent", EXPONENT, 0, true);
         if (kind.equals("phong")) {
             return new Phong(ka, kd, cd, ks, cs, exp, m.bool("normalized", false));
+        }
+        if (kind.equals("glossy")) {
+            return new GlossyReflector(ka, kd, cd, ks, cs, exp, m.integer("samples", GLOSSY_SAMPLES, 1), m.bool("normalized", false));
         }
         String fresnel = m.string("fresnel", "none");
         if (!fresnel.equals("none") && !fresnel.equals("schlick")) {
