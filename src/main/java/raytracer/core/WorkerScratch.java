@@ -56,6 +56,7 @@ public final class WorkerScratch {
         }
         lightX = new double[lightSamples];
         lightY = new double[lightSamples];
+        environments = new Background[levels];
         patternX = new double[levels][];
         patternY = new double[levels][];
     }
@@ -67,6 +68,21 @@ public final class WorkerScratch {
             sum += sr.boxTests;
         }
         return sum;
+    }
+
+    private final Background[] environments;
+
+    /**
+     * Sets the environment that rays traced at {@code depth} see when they escape; null means the
+     * scene's background. A material with its own reflection map sets it for the rays it spawns.
+     */
+    public void setEnvironment(int depth, Background environment) {
+        environments[depth] = environment;
+    }
+
+    /** The environment for escaping rays at {@code depth}, or null for the scene's background. */
+    public Background environment(int depth) {
+        return environments[depth];
     }
 
     private final double[][] patternX;

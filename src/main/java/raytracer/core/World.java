@@ -18,7 +18,7 @@ public final class World {
     private ViewPlane viewPlane;
     private Camera camera;
     private Tracer tracer;
-    private RGBColor background = RGBColor.BLACK;
+    private Background background = (ray, out) -> out.setBlack();
     private Light ambient;
     private final List<GeometricObject> objectList = new ArrayList<>();
     private final List<Light> lightList = new ArrayList<>();
@@ -47,7 +47,11 @@ public final class World {
         this.tracer = factory.apply(this);
     }
 
-    public void setBackground(RGBColor background) {
+    public void setBackground(RGBColor color) {
+        this.background = (ray, out) -> out.set(color);
+    }
+
+    public void setBackground(Background background) {
         this.background = background;
     }
 
@@ -133,7 +137,7 @@ public final class World {
         return tracer;
     }
 
-    public RGBColor background() {
+    public Background background() {
         return background;
     }
 

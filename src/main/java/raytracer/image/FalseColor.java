@@ -37,15 +37,11 @@ public final class FalseColor {
                 for (int k = 0; k < 3; k++) {
                     // interpolate in display space, then store linear so the PNG encoder restores it
                     double display = (1 - w) * RAMP[i][k] + w * RAMP[i + 1][k];
-                    c[k] = srgbDecode(display);
+                    c[k] = ToneMap.srgbDecode(display);
                 }
                 out.set(x, y, c[0], c[1], c[2]);
             }
         }
         return out;
-    }
-
-    private static double srgbDecode(double v) {
-        return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
     }
 }

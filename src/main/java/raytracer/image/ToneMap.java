@@ -13,6 +13,11 @@ public final class ToneMap {
         return linear <= 0.0031308 ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
     }
 
+    /** The inverse transfer function: an sRGB-encoded value in [0, 1] back to linear. */
+    public static double srgbDecode(double v) {
+        return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
+    }
+
     /** An 8-bit sRGB code value for a linear radiance, after exposure and clamping. */
     public static int toByte(double linear, double exposure) {
         double v = linear * exposure;

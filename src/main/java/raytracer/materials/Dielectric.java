@@ -4,6 +4,7 @@ import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
 import raytracer.btdf.PerfectTransmitter;
+import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.core.WorkerScratch;
@@ -25,6 +26,8 @@ import raytracer.math.Vec3;
  * the recursion limit from looking brighter than they are.
  */
 public final class Dielectric extends Material {
+    /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
+    private Background reflectionMap;
     private final Lambertian ambient;
     private final Lambertian diffuse;
     private final GlossySpecular specular;
@@ -69,10 +72,16 @@ public final class Dielectric extends Material {
         }
     }
 
-    private static void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out) {
+    private void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out) {
         Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
         scratch.secondaryRays++;
+        scratch.setEnvironment(depth, reflectionMap);
         sr.world.tracer().traceRay(ray, depth, scratch, out);
+    }
+
+    /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
+    public void setReflectionMap(Background reflectionMap) {
+        this.reflectionMap = reflectionMap;
     }
 
     @Override

@@ -2,9 +2,11 @@ package raytracer.materials;
 
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
+import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
+import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
@@ -19,8 +21,12 @@ import raytracer.math.Vec3;
  * ray can hit, still give their highlight directly.
  */
 public final class GlossyReflector extends Material {
-    private final Lambertian ambient;
-    private final Lambertian diffuse;
+    /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
+    private Background reflectionMap;
+    private Lambertian ambient;
+    private Lambertian diffuse;
+    private final double ka;
+    private final double kd;
     private final GlossySpecular specular;
     private final int samples;
 
@@ -29,10 +35,18 @@ public final class GlossyReflector extends Material {
         if (samples < 1) {
             throw new IllegalArgumentException("glossy samples must be at least 1, got " + samples);
         }
+        this.ka = ka;
+        this.kd = kd;
         this.ambient = new Lambertian(ka, cd);
         this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, normalized);
         this.samples = samples;
+    }
+
+    /** Replaces the diffuse colour by a texture looked up at each hit. */
+    public void setTexture(Texture texture) {
+        this.ambient = new Lambertian(ka, texture);
+        this.diffuse = new Lambertian(kd, texture);
     }
 
     @Override
@@ -60,6 +74,7 @@ public final class GlossyReflector extends Material {
             }
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
             scratch.secondaryRays++;
+            scratch.setEnvironment(next, reflectionMap);
             sr.world.tracer().traceRay(ray, next, scratch, incoming);
             r += incoming.r * weight;
             g += incoming.g * weight;
@@ -69,6 +84,11 @@ public final class GlossyReflector extends Material {
         out.r += r * cs.r() / n;
         out.g += g * cs.g() / n;
         out.b += b * cs.b() / n;
+    }
+
+    /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
+    public void setReflectionMap(Background reflectionMap) {
+        this.reflectionMap = reflectionMap;
     }
 
     @Override

@@ -3,8 +3,10 @@ package raytracer.materials;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
+import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
@@ -18,8 +20,12 @@ import raytracer.math.Rgb;
  * the reflectance at normal incidence (report section 3: the brown mirror sphere with 0.5).
  */
 public final class Reflective extends Material {
-    private final Lambertian ambient;
-    private final Lambertian diffuse;
+    /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
+    private Background reflectionMap;
+    private Lambertian ambient;
+    private Lambertian diffuse;
+    private final double ka;
+    private final double kd;
     private final GlossySpecular specular;
     private final PerfectSpecular mirror;
     private final RGBColor reflectance;
@@ -30,11 +36,19 @@ public final class Reflective extends Material {
                       double kr, RGBColor cr, boolean schlick) {
         this.kr = kr;
         this.schlick = schlick;
+        this.ka = ka;
+        this.kd = kd;
         this.ambient = new Lambertian(ka, cd);
         this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, false);
         this.mirror = new PerfectSpecular(kr, cr);
         this.reflectance = schlick ? cr : mirror.reflectance();
+    }
+
+    /** Replaces the diffuse colour by a texture looked up at each hit. */
+    public void setTexture(Texture texture) {
+        this.ambient = new Lambertian(ka, texture);
+        this.diffuse = new Lambertian(kd, texture);
     }
 
     @Override
@@ -48,10 +62,16 @@ public final class Reflective extends Material {
         mirror.sampleDirection(sr, sr.wo, sr.wi);
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
         scratch.secondaryRays++;
+        scratch.setEnvironment(next, reflectionMap);
         Rgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
         double fraction = schlick ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : 1;
         out.addProduct(incoming, reflectance, fraction);
+    }
+
+    /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
+    public void setReflectionMap(Background reflectionMap) {
+        this.reflectionMap = reflectionMap;
     }
 
     @Override

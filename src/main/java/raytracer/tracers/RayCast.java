@@ -1,5 +1,6 @@
 package raytracer.tracers;
 
+import raytracer.core.Background;
 import raytracer.core.ShadeRec;
 import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
@@ -29,7 +30,8 @@ public final class RayCast implements Tracer {
         if (world.hit(ray, sr)) {
             sr.material.shade(sr, out);
         } else {
-            out.set(world.background());
+            Background environment = scratch.environment(depth);
+            (environment != null ? environment : world.background()).radiance(ray, out);
         }
     }
 }

@@ -6,11 +6,14 @@ import raytracer.brdf.BlinnPhong;
 import raytracer.brdf.FittedPreset;
 import raytracer.brdf.Ward;
 import raytracer.core.BRDF;
+import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.Texture;
 import raytracer.materials.Dielectric;
 import raytracer.materials.Fitted;
 import raytracer.materials.GlossyReflector;
 import raytracer.materials.Matte;
+import raytracer.materials.Reflective;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
 import raytracer.math.RGBColor;
@@ -54,15 +57,45 @@ final class MaterialReader {
         return new Fitted(rhoD, lobe, ka, seed);
     }
 
-    static Material read(Source source, String name, Node node) throws SceneException {
+    static Material read(Source source, String name, Node node, TextureReader textures) throws SceneException {
+        Material material = readUntextured(source, name, node);
+        // the keys were checked against the material's type by readUntextured
+        YamlObject keys = new YamlObject(source, node, "material '" + name + "'", AnyName.INSTANCE);
+        if (keys.has("texture")) {
+            Texture texture = textures.texture(keys.raw("texture"));
+            if (material instanceof Matte m) {
+                m.setTexture(texture);
+            } else if (material instanceof Phong p) {
+                p.setTexture(texture);
+            } else if (material instanceof GlossyReflector g) {
+                g.setTexture(texture);
+            } else if (material instanceof Reflective r) {
+                r.setTexture(texture);
+            }
+        }
+        if (keys.has("reflection-map")) {
+            Background map = textures.environment(keys.raw("reflection-map"), "reflection-map of material '" + name + "'");
+            if (material instanceof Reflective r) {
+                r.setReflectionMap(map);
+            } else if (material instanceof Dielectric d) {
+                d.setReflectionMap(map);
+            } else if (material instanceof GlossyReflector g) {
+                g.setReflectionMap(map);
+            }
+        }
+        return material;
+    }
+
+    private static Material readUntextured(Source source, String name, Node node) throws SceneException {
         String kind = YamlObject.peekType(source, node, "material '" + name + "'", "matte");
         Set<String> allowed = switch (kind) {
-            case "matte" -> Set.of("type", "ka", "kd", "color");
-            case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized");
+            case "matte" -> Set.of("type", "ka", "kd", "color", "texture");
+            case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized", "texture");
             case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
-                                        "fresnel");
-            case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent");
-            case "glossy" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "samples", "normalized");
+                                        "fresnel", "texture", "reflection-map");
+            case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent", "reflection-map");
+            case "glossy" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "samples", "normalized",
+                                    "texture", "reflection-map");
             case "ward", "ward-duer" -> Set.of("type", "preset", "rho-d", "rho-s", "alpha", "ka", "seed-compatible");
             case "blinn-phong" -> Set.of("type", "preset", "rho-d", "rho-s", "exponent", "ka", "seed-compatible");
             default -> throw source.error(YamlObject.typeNode(node),

@@ -9,6 +9,7 @@ import raytracer.accel.MeshBVH;
 import raytracer.accel.SahBuilder;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
+import raytracer.core.Texture;
 import raytracer.core.World;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
@@ -17,6 +18,7 @@ import raytracer.io.obj.ObjModel;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.math.RGBColor;
+import raytracer.textures.ImageTexture;
 
 /**
  * A {@code mesh} object: an OBJ file under a BVH. Without a {@code material} key the file's MTL
@@ -30,7 +32,7 @@ final class MeshReader {
     private MeshReader() {
     }
 
-    static GeometricObject read(YamlObject o, Material override, World world) throws SceneException {
+    static GeometricObject read(YamlObject o, Material override, World world, TextureReader textures) throws SceneException {
         Path file = o.source().resolve(o.requiredString("file"));
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
@@ -55,7 +57,7 @@ final class MeshReader {
         List<Material> materials = new ArrayList<>();
         if (override == null) {
             for (ObjMaterial m : model.materials()) {
-                materials.add(fromMtl(m));
+                materials.add(fromMtl(m, textures, world));
             }
         }
         MeshBVH mesh = new MeshBVH(model.mesh(), bvh, materials);
@@ -64,12 +66,29 @@ final class MeshReader {
         return mesh;
     }
 
-    static Material fromMtl(ObjMaterial m) {
+    /** Kd (or map_Kd) to a Lambertian, Ks and Ns to a Phong lobe. An unreadable map_Kd is a warning. */
+    static Material fromMtl(ObjMaterial m, TextureReader textures, World world) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
-        if (ks.max() > 0 && m.ns() > 0) {
-            return new Phong(MaterialReader.KA, 1, kd, 1, ks, m.ns(), false);
+        Texture texture = null;
+        if (m.mapKd() != null) {
+            try {
+                texture = new ImageTexture(textures.image(m.mapKd(), null));
+            } catch (SceneException e) {
+                world.addWarning(e.getMessage() + "; material '" + m.name() + "' uses its Kd colour instead");
+            }
         }
-        return new Matte(MaterialReader.KA, 1, kd);
+        if (ks.max() > 0 && m.ns() > 0) {
+            Phong phong = new Phong(MaterialReader.KA, 1, kd, 1, ks, m.ns(), false);
+            if (texture != null) {
+                phong.setTexture(texture);
+            }
+            return phong;
+        }
+        Matte matte = new Matte(MaterialReader.KA, 1, kd);
+        if (texture != null) {
+            matte.setTexture(texture);
+        }
+        return matte;
     }
 }

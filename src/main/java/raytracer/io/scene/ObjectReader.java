@@ -34,8 +34,8 @@ final class ObjectReader {
     private ObjectReader() {
     }
 
-    static GeometricObject read(Source source, Node node, Map<String, Material> materials, World world)
-            throws SceneException {
+    static GeometricObject read(Source source, Node node, Map<String, Material> materials, World world,
+                                TextureReader textures) throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
@@ -47,7 +47,7 @@ final class ObjectReader {
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
         if (kind.equals("mesh")) {
-            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, world);
+            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, world, textures);
         } else {
             try {
                 shape = shape(kind, o);

@@ -33,7 +33,7 @@ import raytracer.tracers.Whitted;
  */
 public final class SceneLoader {
     private static final Set<String> SECTIONS =
-        Set.of("image", "tracer", "background", "camera", "ambient", "materials", "lights", "objects");
+        Set.of("image", "tracer", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure");
 
     private SceneLoader() {
@@ -82,14 +82,18 @@ public final class SceneLoader {
         ViewPlane vp = readImage(source, scene);
         Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
         World world = new World(vp, camera, readAmbient(source, scene));
+        TextureReader textures = new TextureReader(source);
         world.setBackground(scene.color("background", RGBColor.BLACK));
+        if (scene.has("environment")) {
+            world.setBackground(textures.environment(scene.raw("environment"), "environment"));
+        }
         String tracer = scene.string("tracer", "whitted");
         switch (tracer) {
             case "whitted" -> world.setTracer(Whitted::new);
             case "ray-cast" -> world.setTracer(RayCast::new);
             default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + tracer + "'; allowed: ray-cast, whitted");
         }
-        Map<String, Material> materials = readMaterials(source, scene);
+        Map<String, Material> materials = readMaterials(source, scene, textures);
         for (Node light : scene.list("lights")) {
             world.addLight(LightReader.read(source, light, world));
         }
@@ -97,7 +101,7 @@ public final class SceneLoader {
             throw source.error(root, "the scene has no 'objects' list");
         }
         for (Node object : scene.list("objects")) {
-            world.addObject(ObjectReader.read(source, object, materials, world));
+            world.addObject(ObjectReader.read(source, object, materials, world, textures));
         }
         return world;
     }
@@ -127,34 +131,17 @@ public final class SceneLoader {
         return new Ambient(a.number("radiance", 0.1, 0, false), a.color("color", RGBColor.WHITE));
     }
 
-    private static Map<String, Material> readMaterials(Source source, YamlObject scene) throws SceneException {
+    private static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)
+            throws SceneException {
         Map<String, Material> materials = new LinkedHashMap<>();
         if (!scene.has("materials")) {
             return materials;
         }
         Node node = scene.raw("materials");
-        YamlObject names = new YamlObject(source, node, "materials", new AnyKey());
+        YamlObject names = new YamlObject(source, node, "materials", AnyName.INSTANCE);
         for (Map.Entry<String, Node> entry : names.keyNodes().entrySet()) {
-            materials.put(entry.getKey(), MaterialReader.read(source, entry.getKey(), names.raw(entry.getKey())));
+            materials.put(entry.getKey(), MaterialReader.read(source, entry.getKey(), names.raw(entry.getKey()), textures));
         }
         return materials;
-    }
-
-    /** The materials map accepts any name as a key. */
-    private static final class AnyKey extends java.util.AbstractSet<String> {
-        @Override
-        public boolean contains(Object o) {
-            return true;
-        }
-
-        @Override
-        public java.util.Iterator<String> iterator() {
-            return java.util.Collections.emptyIterator();
-        }
-
-        @Override
-        public int size() {
-            return 0;
-        }
     }
 }

@@ -160,6 +160,25 @@ class SceneLoaderTest {
     }
 
     @Test
+    void texturesAndEnvironmentMaps(@TempDir Path dir) throws IOException, SceneException {
+        Path hdr = raytracer.io.obj.SharedAssets.path("env/venice_sunset_1k.hdr").toAbsolutePath();
+        Files.writeString(dir.resolve("s.yaml"), "environment: {file: " + hdr + ", intensity: 0.5}\n"
+            + "materials:\n  floor: {type: matte, texture: {type: checker, size: 0.5}}\n"
+            + "  chrome: {type: reflective, kr: 1, reflection-map: {file: " + hdr + "}}\n"
+            + "objects:\n  - {type: plane, normal: [0, 1, 0], material: floor}\n"
+            + "  - {type: sphere, center: [0, 1, 0], material: chrome}\n");
+        World world = SceneLoader.load(dir.resolve("s.yaml"));
+        assertTrue(world.background() instanceof raytracer.textures.EnvironmentMap);
+        Files.writeString(dir.resolve("bad.yaml"), "materials:\n  m: {type: matte, texture: {type: image, file: missing.png}}\n"
+            + "objects: []\n");
+        SceneException missing = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("bad.yaml")));
+        assertMessage(missing.getMessage(), dir.resolve("bad.yaml") + ":2:", "missing.png", "not found");
+        Files.writeString(dir.resolve("env.yaml"), "environment: {file: nowhere.hdr}\nobjects: []\n");
+        SceneException env = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("env.yaml")));
+        assertMessage(env.getMessage(), dir.resolve("env.yaml") + ":1:", "nowhere.hdr");
+    }
+
+    @Test
     void glassAndFresnelMirrors() throws SceneException {
         World world = SceneLoader.load("s.yaml", "materials:\n"
             + "  glass: {type: dielectric, ior: 1.5, absorption: [0.1, 0, 0.2]}\n"

@@ -1,0 +1,67 @@
+package raytracer.io.scene;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.Set;
+import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.Texture;
+import raytracer.image.Film;
+import raytracer.image.ImageFiles;
+import raytracer.math.RGBColor;
+import raytracer.textures.Checker;
+import raytracer.textures.EnvironmentMap;
+import raytracer.textures.ImageTexture;
+
+/**
+ * Textures ({@code texture: {type: checker | image, ...}}) and environment maps
+ * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
+ */
+final class TextureReader {
+    private final Source source;
+    private final Map<Path, Film> images = new HashMap<>();
+
+    TextureReader(Source source) {
+        this.source = source;
+    }
+
+    Texture texture(Node node) throws SceneException {
+        String kind = YamlObject.peekType(source, node, "texture", null);
+        switch (kind) {
+            case "checker" -> {
+                YamlObject t = new YamlObject(source, node, "checker texture", Set.of("type", "color-a", "color-b", "size"));
+                return new Checker(t.color("color-a", RGBColor.WHITE), t.color("color-b", RGBColor.gray(0.1)),
+                                   t.number("size", 0.1, 0, true));
+            }
+            case "image" -> {
+                YamlObject t = new YamlObject(source, node, "image texture", Set.of("type", "file"));
+                return new ImageTexture(image(t));
+            }
+            default -> throw source.error(YamlObject.typeNode(node), "unknown texture type '" + kind + "'; allowed: checker, image");
+        }
+    }
+
+    EnvironmentMap environment(Node node, String what) throws SceneException {
+        YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity"));
+        return new EnvironmentMap(image(e), e.number("intensity", 1, 0, false));
+    }
+
+    /** Reads (or reuses) an image for a file path given relative to the scene, naming the path on failure. */
+    Film image(Path path, Node where) throws SceneException {
+        Film film = images.get(path);
+        if (film == null) {
+            try {
+                film = ImageFiles.read(path);
+            } catch (IOException e) {
+                throw where != null ? source.error(where, e.getMessage()) : new SceneException(e.getMessage(), e);
+            }
+            images.put(path, film);
+        }
+        return film;
+    }
+
+    private Film image(YamlObject o) throws SceneException {
+        return image(source.resolve(o.requiredString("file")), o.raw("file"));
+    }
+}

@@ -1,0 +1,32 @@
+package raytracer.textures;
+
+import raytracer.core.Background;
+import raytracer.image.Film;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+
+/**
+ * An equirectangular (latitude-longitude) environment: the direction d looks up
+ * u = 1/2 + atan2(d_x, -d_z) / (2 pi), v = acos(d_y) / pi, so the image's centre is seen looking
+ * down -z, its top row straight up, and +x a quarter turn to the right. Radiance is scaled by
+ * {@code intensity}.
+ */
+public final class EnvironmentMap implements Background {
+    private final Film image;
+    private final double intensity;
+
+    public EnvironmentMap(Film image, double intensity) {
+        this.image = image;
+        this.intensity = intensity;
+    }
+
+    @Override
+    public void radiance(Ray ray, Rgb out) {
+        double len = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+        double dy = Math.max(-1, Math.min(1, ray.dy / len));
+        double u = 0.5 + Math.atan2(ray.dx, -ray.dz) / (2 * Math.PI);
+        double v = Math.acos(dy) / Math.PI;
+        Bilinear.lookup(image, u, v, false, out);
+        out.scale(intensity);
+    }
+}
