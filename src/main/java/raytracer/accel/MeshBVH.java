@@ -4,8 +4,11 @@ import java.util.List;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.Texture;
 import raytracer.math.BBox;
 import raytracer.math.Ray;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
 import raytracer.shapes.Watertight;
 import raytracer.shapes.mesh.Mesh;
 
@@ -25,6 +28,9 @@ public final class MeshBVH extends GeometricObject implements Leaves {
      */
     private final double[] leafVertices;
     private final Material[] materials;
+    /** Per material id: a normal map (RGB = (n + 1) / 2) or null, and whether it is in tangent space. */
+    private final Texture[] normalMaps;
+    private final boolean[] tangentSpace;
 
     /**
      * @param materials one per material id of the mesh (or one for all); null entries fall back to
@@ -38,12 +44,24 @@ public final class MeshBVH extends GeometricObject implements Leaves {
         this.positions = mesh.positions();
         this.bvh = bvh;
         this.materials = materials.toArray(new Material[0]);
+        this.normalMaps = new Texture[Math.max(1, this.materials.length)];
+        this.tangentSpace = new boolean[normalMaps.length];
         leafVertices = new double[9 * bvh.order.length];
         for (int k = 0; k < bvh.order.length; k++) {
             for (int c = 0; c < 3; c++) {
                 System.arraycopy(positions, mesh.corner(bvh.order[k], c), leafVertices, 9 * k + 3 * c, 3);
             }
         }
+    }
+
+    /**
+     * Gives the triangles of material {@code id} (0 when the mesh has one material) a normal map:
+     * object space as in the report, or tangent space (OpenGL convention, green up) with tangents
+     * from the texture coordinates.
+     */
+    public void setNormalMap(int id, Texture map, boolean tangent) {
+        normalMaps[id] = map;
+        tangentSpace[id] = tangent;
     }
 
     /** The bounds of every triangle, six numbers each, as the builders take them. */
@@ -142,11 +160,72 @@ public final class MeshBVH extends GeometricObject implements Leaves {
             sr.v = b2;
         }
         int[] ids = mesh.materialIds();
+        int id = ids != null ? ids[tri] : 0;
+        if (id < normalMaps.length && normalMaps[id] != null) {
+            applyNormalMap(tri, id, sr);
+        }
         if (ids != null && ids[tri] < materials.length && materials[ids[tri]] != null) {
             sr.material = materials[ids[tri]];
         } else if (ids == null && materials.length == 1 && materials[0] != null) {
             sr.material = materials[0];
         }
+    }
+
+    /**
+     * Replaces the shading normal by the map's: n = 2 rgb - 1, taken as it is (object space) or in
+     * the frame (T, B, N) where T and B follow u and v across the triangle (tangent space).
+     */
+    private void applyNormalMap(int tri, int id, ShadeRec sr) {
+        Rgb texel = sr.scratch.brdfScratch;
+        normalMaps[id].getColor(sr, texel);
+        double mx = 2 * texel.r - 1;
+        double my = 2 * texel.g - 1;
+        double mz = 2 * texel.b - 1;
+        if (!tangentSpace[id]) {
+            sr.normal.set(mx, my, mz);
+            return;
+        }
+        if (!mesh.hasUvs()) {
+            return;
+        }
+        float[] uv = mesh.uvs();
+        int a = mesh.corner(tri, 0);
+        int b = mesh.corner(tri, 1);
+        int c = mesh.corner(tri, 2);
+        int ta = 2 * mesh.vertex(tri, 0);
+        int tb = 2 * mesh.vertex(tri, 1);
+        int tc = 2 * mesh.vertex(tri, 2);
+        double du1 = uv[tb] - uv[ta];
+        double dv1 = uv[tb + 1] - uv[ta + 1];
+        double du2 = uv[tc] - uv[ta];
+        double dv2 = uv[tc + 1] - uv[ta + 1];
+        double det = du1 * dv2 - du2 * dv1;
+        if (det == 0) {
+            return; // no texture-space direction to follow
+        }
+        double[] p = positions;
+        // dP/du from the two edges (Lengyel, "Computing tangent space basis vectors", 2001)
+        double tx = ((p[b] - p[a]) * dv2 - (p[c] - p[a]) * dv1) / det;
+        double ty = ((p[b + 1] - p[a + 1]) * dv2 - (p[c + 1] - p[a + 1]) * dv1) / det;
+        double tz = ((p[b + 2] - p[a + 2]) * dv2 - (p[c + 2] - p[a + 2]) * dv1) / det;
+        Vec3 n = sr.normal.normalize();
+        // Gram-Schmidt: T perpendicular to N, B = N x T, flipped where the UVs are mirrored
+        double tn = tx * n.x + ty * n.y + tz * n.z;
+        tx -= tn * n.x;
+        ty -= tn * n.y;
+        tz -= tn * n.z;
+        double len = Math.sqrt(tx * tx + ty * ty + tz * tz);
+        if (!(len > 0)) {
+            return;
+        }
+        tx /= len;
+        ty /= len;
+        tz /= len;
+        double handedness = det < 0 ? -1 : 1;
+        double bx = handedness * (n.y * tz - n.z * ty);
+        double by = handedness * (n.z * tx - n.x * tz);
+        double bz = handedness * (n.x * ty - n.y * tx);
+        sr.normal.set(mx * tx + my * bx + mz * n.x, mx * ty + my * by + mz * n.y, mx * tz + my * bz + mz * n.z);
     }
 
     @Override

@@ -13,6 +13,14 @@ public final class ImageFiles {
     }
 
     public static Film read(Path file) throws IOException {
+        return read(file, true);
+    }
+
+    /**
+     * As {@link #read(Path)}; with {@code srgb} false the 8-bit values are taken as they are, for
+     * data such as normal maps that are not colours.
+     */
+    public static Film read(Path file, boolean srgb) throws IOException {
         if (!Files.isRegularFile(file)) {
             throw new IOException("image " + file + " not found");
         }
@@ -27,8 +35,14 @@ public final class ImageFiles {
         for (int y = 0; y < image.getHeight(); y++) {
             for (int x = 0; x < image.getWidth(); x++) {
                 int rgb = image.getRGB(x, y);
-                film.set(x, y, ToneMap.srgbDecode((rgb >> 16 & 0xff) / 255.0), ToneMap.srgbDecode((rgb >> 8 & 0xff) / 255.0),
-                         ToneMap.srgbDecode((rgb & 0xff) / 255.0));
+                double r = (rgb >> 16 & 0xff) / 255.0;
+                double g = (rgb >> 8 & 0xff) / 255.0;
+                double b = (rgb & 0xff) / 255.0;
+                if (srgb) {
+                    film.set(x, y, ToneMap.srgbDecode(r), ToneMap.srgbDecode(g), ToneMap.srgbDecode(b));
+                } else {
+                    film.set(x, y, r, g, b);
+                }
             }
         }
         return film;

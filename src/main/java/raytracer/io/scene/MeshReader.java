@@ -61,9 +61,49 @@ final class MeshReader {
             }
         }
         MeshBVH mesh = new MeshBVH(model.mesh(), bvh, materials);
+        normalMaps(o, model, mesh, textures, world);
         mesh.setMaterial(override != null ? override
                          : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
+    }
+
+    /**
+     * The object's {@code normal-map: {file, space: tangent | object}} for all its triangles, or
+     * {@code none}; without the key, each MTL material's norm / map_Bump read as a tangent-space
+     * normal map (OpenGL convention).
+     */
+    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, World world)
+            throws SceneException {
+        if (o.has("normal-map") && o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
+            String value = o.requiredString("normal-map");
+            if (!value.equals("none")) {
+                throw o.source().error(o.raw("normal-map"), "'normal-map' is {file, space} or none, got '" + value + "'");
+            }
+            return; // none: not even the MTL's
+        }
+        if (o.has("normal-map")) {
+            YamlObject map = new YamlObject(o.source(), o.raw("normal-map"), "normal-map", java.util.Set.of("file", "space"));
+            String space = map.string("space", "tangent");
+            if (!space.equals("tangent") && !space.equals("object")) {
+                throw o.source().error(map.raw("space"), "unknown normal-map space '" + space + "'; allowed: object, tangent");
+            }
+            ImageTexture texture = new ImageTexture(textures.linearImage(o.source().resolve(map.requiredString("file")), map.raw("file")));
+            int ids = Math.max(1, model.materials().size());
+            for (int id = 0; id < ids; id++) {
+                mesh.setNormalMap(id, texture, space.equals("tangent"));
+            }
+            return;
+        }
+        for (int id = 0; id < model.materials().size(); id++) {
+            ObjMaterial m = model.materials().get(id);
+            if (m.mapBump() != null) {
+                try {
+                    mesh.setNormalMap(id, new ImageTexture(textures.linearImage(m.mapBump(), null)), true);
+                } catch (SceneException e) {
+                    world.addWarning(e.getMessage() + "; material '" + m.name() + "' has no normal map");
+                }
+            }
+        }
     }
 
     /** Kd (or map_Kd) to a Lambertian, Ks and Ns to a Phong lobe. An unreadable map_Kd is a warning. */

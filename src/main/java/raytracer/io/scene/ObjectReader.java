@@ -29,7 +29,7 @@ final class ObjectReader {
         "box", Set.of("min", "max"),
         "cylinder", Set.of("bottom", "top", "radius", "closed"),
         "triangle", Set.of("vertices"),
-        "mesh", Set.of("file", "smooth", "bvh"));
+        "mesh", Set.of("file", "smooth", "bvh", "normal-map"));
 
     private ObjectReader() {
     }

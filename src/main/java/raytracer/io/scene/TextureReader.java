@@ -21,6 +21,7 @@ import raytracer.textures.ImageTexture;
 final class TextureReader {
     private final Source source;
     private final Map<Path, Film> images = new HashMap<>();
+    private final Map<Path, Film> linearImages = new HashMap<>();
 
     TextureReader(Source source) {
         this.source = source;
@@ -49,14 +50,24 @@ final class TextureReader {
 
     /** Reads (or reuses) an image for a file path given relative to the scene, naming the path on failure. */
     Film image(Path path, Node where) throws SceneException {
-        Film film = images.get(path);
+        return image(path, where, true);
+    }
+
+    /** A normal map: the same, but its bytes are data, not sRGB colours. */
+    Film linearImage(Path path, Node where) throws SceneException {
+        return image(path, where, false);
+    }
+
+    private Film image(Path path, Node where, boolean srgb) throws SceneException {
+        Map<Path, Film> cache = srgb ? images : linearImages;
+        Film film = cache.get(path);
         if (film == null) {
             try {
-                film = ImageFiles.read(path);
+                film = ImageFiles.read(path, srgb);
             } catch (IOException e) {
                 throw where != null ? source.error(where, e.getMessage()) : new SceneException(e.getMessage(), e);
             }
-            images.put(path, film);
+            cache.put(path, film);
         }
         return film;
     }
