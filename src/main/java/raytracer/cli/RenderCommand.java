@@ -17,6 +17,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
+import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.image.FalseColor;
@@ -67,6 +68,11 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--view", paramLabel = "VIEW",
             description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
     String view = "shaded";
+
+    @Option(names = "--pass", paramLabel = "PASS",
+            description = "Terms of the first hit (report figures 4 and 6): full, direct, reflection, refraction, "
+                          + "magenta-reflection or no-fresnel. Default: the scene's, else full.")
+    String pass;
 
     @Option(names = "--accel", paramLabel = "MODE",
             description = "Search structure for the scene's objects: auto (default; a BVH from "
@@ -129,6 +135,9 @@ public final class RenderCommand implements Callable<Integer> {
             world.warnings().forEach(w -> spec.commandLine().getErr().println("render: warning: " + w));
         }
         applyOverrides(world);
+        if (pass != null) {
+            world.setPass(ShadingPass.parse(pass));
+        }
         long prepareStart = System.nanoTime();
         world.prepare(objects -> Aggregation.organize(objects, accelMode));
         long prepareNanos = System.nanoTime() - prepareStart;

@@ -20,6 +20,7 @@ public final class World {
     private Tracer tracer;
     private Background background = (ray, out) -> out.setBlack();
     private Light ambient;
+    private ShadingPass pass = ShadingPass.FULL;
     private final List<GeometricObject> objectList = new ArrayList<>();
     private final List<Light> lightList = new ArrayList<>();
 
@@ -123,6 +124,15 @@ public final class World {
 
     public List<String> warnings() {
         return List.copyOf(warnings);
+    }
+
+    public void setPass(ShadingPass pass) {
+        this.pass = pass;
+    }
+
+    /** Which terms the first hit shows (report figures 4 and 6); FULL normally. */
+    public ShadingPass pass() {
+        return pass;
     }
 
     public ViewPlane viewPlane() {

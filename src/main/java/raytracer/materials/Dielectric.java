@@ -7,6 +7,7 @@ import raytracer.btdf.PerfectTransmitter;
 import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.ShadingPass;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
@@ -47,21 +48,26 @@ public final class Dielectric extends Material {
     public void shade(ShadeRec sr, Rgb out) {
         DirectLighting.shade(sr, ambient, diffuse, specular, out);
         int next = sr.depth + 1;
+        ShadingPass pass = sr.world.pass();
         if (next <= sr.world.viewPlane().maxDepth()) {
             WorkerScratch scratch = sr.scratch;
             double cosI = sr.normal.dot(sr.wo);
             double eta = transmitter.relativeEta(sr);
-            double r = Fresnel.dielectric(cosI, 1, 1 / eta);
             Vec3 wi = sr.wi;
+            boolean refracts = transmitter.sampleDirection(sr, sr.wo, wi);
+            // the ablation without angle dependence: all refracted, nothing reflected (but for TIR)
+            double r = !refracts ? 1 : pass.angleDependent() ? Fresnel.dielectric(cosI, 1, 1 / eta) : 0;
             Rgb incoming = scratch.color(next);
-            // the mirror part, R (all of it under total internal reflection)
-            mirror.sampleDirection(sr, sr.wo, wi);
-            trace(sr, wi, next, scratch, incoming);
-            out.addProduct(incoming, RGBColor.WHITE, r);
-            // the refracted part, 1 - R
-            if (r < 1 && transmitter.sampleDirection(sr, sr.wo, wi)) {
-                trace(sr, wi, next, scratch, incoming);
+            // the refracted part, 1 - R (wi holds its direction)
+            if (r < 1 && pass.refraction(sr.depth)) {
+                trace(sr, wi, next, scratch, incoming, null);
                 out.addProduct(incoming, RGBColor.WHITE, 1 - r);
+            }
+            // the mirror part, R (all of it under total internal reflection)
+            if (r > 0 && pass.reflection(sr.depth)) {
+                mirror.sampleDirection(sr, sr.wo, wi);
+                trace(sr, wi, next, scratch, incoming, pass.magentaReflection(sr.depth) ? Reflective.MAGENTA : reflectionMap);
+                out.addProduct(incoming, RGBColor.WHITE, r);
             }
         }
         if (!sr.frontFace) {
@@ -72,10 +78,10 @@ public final class Dielectric extends Material {
         }
     }
 
-    private void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out) {
+    private void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out, Background environment) {
         Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
         scratch.secondaryRays++;
-        scratch.setEnvironment(depth, reflectionMap);
+        scratch.setEnvironment(depth, environment != null ? environment : reflectionMap);
         sr.world.tracer().traceRay(ray, depth, scratch, out);
     }
 

@@ -38,6 +38,10 @@ final class DirectLighting {
                       boolean specularFromAreaLights, Rgb out) {
         WorkerScratch scratch = sr.scratch;
         Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+        if (!sr.world.pass().direct(sr.depth)) {
+            out.setBlack();
+            return;
+        }
         Rgb f = scratch.brdfScratch;
         Rgb incident = scratch.lightScratch;
 

@@ -53,7 +53,7 @@ public final class GlossyReflector extends Material {
     public void shade(ShadeRec sr, Rgb out) {
         DirectLighting.shade(sr, ambient, diffuse, specular, false, false, out);
         int next = sr.depth + 1;
-        if (next > sr.world.viewPlane().maxDepth()) {
+        if (next > sr.world.viewPlane().maxDepth() || !sr.world.pass().reflection(sr.depth)) {
             return;
         }
         WorkerScratch scratch = sr.scratch;

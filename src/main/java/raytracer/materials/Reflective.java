@@ -6,6 +6,7 @@ import raytracer.brdf.PerfectSpecular;
 import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.ShadingPass;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
@@ -22,6 +23,8 @@ import raytracer.math.Rgb;
 public final class Reflective extends Material {
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
+    /** The environment of the magenta-reflection pass (report figures 4c and 6c). */
+    static final Background MAGENTA = (ray, out) -> out.set(1, 0, 1);
     private Lambertian ambient;
     private Lambertian diffuse;
     private final double ka;
@@ -55,17 +58,18 @@ public final class Reflective extends Material {
     public void shade(ShadeRec sr, Rgb out) {
         DirectLighting.shade(sr, ambient, diffuse, specular, out);
         int next = sr.depth + 1;
-        if (next > sr.world.viewPlane().maxDepth()) {
+        ShadingPass pass = sr.world.pass();
+        if (next > sr.world.viewPlane().maxDepth() || !pass.reflection(sr.depth)) {
             return;
         }
         WorkerScratch scratch = sr.scratch;
         mirror.sampleDirection(sr, sr.wo, sr.wi);
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
         scratch.secondaryRays++;
-        scratch.setEnvironment(next, reflectionMap);
+        scratch.setEnvironment(next, pass.magentaReflection(sr.depth) ? MAGENTA : reflectionMap);
         Rgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
-        double fraction = schlick ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : 1;
+        double fraction = schlick && pass.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
         out.addProduct(incoming, reflectance, fraction);
     }
 

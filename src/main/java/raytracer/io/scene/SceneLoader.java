@@ -19,6 +19,7 @@ import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
+import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.lights.Ambient;
@@ -33,7 +34,7 @@ import raytracer.tracers.Whitted;
  */
 public final class SceneLoader {
     private static final Set<String> SECTIONS =
-        Set.of("image", "tracer", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
+        Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure");
 
     private SceneLoader() {
@@ -92,6 +93,13 @@ public final class SceneLoader {
             case "whitted" -> world.setTracer(Whitted::new);
             case "ray-cast" -> world.setTracer(RayCast::new);
             default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + tracer + "'; allowed: ray-cast, whitted");
+        }
+        if (scene.has("pass")) {
+            try {
+                world.setPass(ShadingPass.parse(scene.requiredString("pass")));
+            } catch (IllegalArgumentException e) {
+                throw source.error(scene.raw("pass"), e.getMessage());
+            }
         }
         Map<String, Material> materials = readMaterials(source, scene, textures);
         for (Node light : scene.list("lights")) {
