@@ -2,7 +2,6 @@ package raytracer.accel;
 
 import raytracer.core.ShadeRec;
 import raytracer.math.Ray;
-import raytracer.math.Slabs;
 
 /**
  * A BVH flattened into arrays in depth-first order, as pbrt stores it: node i's left child is
@@ -10,10 +9,8 @@ import raytracer.math.Slabs;
  * and {@code meta[2i + 1]} is -(split axis + 1) for an interior node or the primitive count of a leaf.
  * Bounds are the exact unions of the primitives' own bounds ({@link #bounds}, doubles).
  *
- * <p>For traversal each node is also packed into 8 ints, 32 bytes ({@link #packed}): its box as six
- * floats rounded outward, so the box never shrinks, then the two meta ints. A node is then half
- * a cache line and its left child the next half; the dragon's tree shrinks from 48 to 32 bytes per
- * node and traces about 15% faster (see README, "BVH layout").
+ * <p>For traversal the interior nodes are also packed into 64-byte {@link #records} holding their
+ * children's boxes.
  */
 public final class FlatBVH {
     /** Deepest tree the builders produce; traversal stacks are this big. */
@@ -24,21 +21,61 @@ public final class FlatBVH {
     final int[] order;
     final int nodeCount;
 
-    final int[] packed;
+    /**
+     * The traversal layout: one record of 16 ints (64 bytes, a cache line) per interior node, in
+     * depth-first order of the interior nodes. A record holds both children's boxes as floats
+     * rounded outward, so the box never shrinks ({@link #LEFT_BOX}, {@link #RIGHT_BOX}, six each),
+     * then each child's link ({@link #LINK}) and primitive count ({@link #COUNT}): a leaf has a
+     * count above 0 and links to its first entry in {@link #order}; an interior child has count 0
+     * and links to its record. Testing both children from their parent's record reads one line per
+     * visited node instead of the parent's and the far child's (see README, "BVH layout").
+     */
+    final int[] records;
+    static final int RECORD = 16;
+    static final int LEFT_BOX = 0;
+    static final int RIGHT_BOX = 6;
+    static final int LINK = 12;
+    static final int COUNT = 14;
+    /** The root's box (float bits, rounded outward), link and count, as a record's child entries. */
+    private final int[] rootBox = new int[6];
+    private final int rootLink;
+    private final int rootCount;
 
     FlatBVH(double[] bounds, int[] meta, int[] order, int nodeCount) {
         this.bounds = bounds;
         this.meta = meta;
         this.order = order;
         this.nodeCount = nodeCount;
-        this.packed = new int[8 * nodeCount];
+        // record index of each interior node, in depth-first order
+        int[] record = new int[nodeCount];
+        int interior = 0;
         for (int node = 0; node < nodeCount; node++) {
-            for (int k = 0; k < 3; k++) {
-                packed[8 * node + k] = Float.floatToRawIntBits(roundDown(bounds[6 * node + k]));
-                packed[8 * node + 3 + k] = Float.floatToRawIntBits(roundUp(bounds[6 * node + 3 + k]));
+            record[node] = isLeaf(node) ? -1 : interior++;
+        }
+        records = new int[RECORD * interior];
+        for (int node = 0; node < nodeCount; node++) {
+            if (isLeaf(node)) {
+                continue;
             }
-            packed[8 * node + 6] = meta[2 * node];
-            packed[8 * node + 7] = meta[2 * node + 1];
+            int r = RECORD * record[node];
+            int left = node + 1;
+            int right = meta[2 * node];
+            packBox(left, records, r + LEFT_BOX);
+            packBox(right, records, r + RIGHT_BOX);
+            records[r + LINK] = isLeaf(left) ? meta[2 * left] : record[left];
+            records[r + LINK + 1] = isLeaf(right) ? meta[2 * right] : record[right];
+            records[r + COUNT] = isLeaf(left) ? meta[2 * left + 1] : 0;
+            records[r + COUNT + 1] = isLeaf(right) ? meta[2 * right + 1] : 0;
+        }
+        packBox(0, rootBox, 0);
+        rootLink = isLeaf(0) ? meta[0] : 0;
+        rootCount = isLeaf(0) ? meta[1] : 0;
+    }
+
+    private void packBox(int node, int[] out, int at) {
+        for (int k = 0; k < 3; k++) {
+            out[at + k] = Float.floatToRawIntBits(roundDown(bounds[6 * node + k]));
+            out[at + 3 + k] = Float.floatToRawIntBits(roundUp(bounds[6 * node + 3 + k]));
         }
     }
 
@@ -75,17 +112,59 @@ public final class FlatBVH {
         return isLeaf(node) ? 1 : 1 + Math.max(depth(node + 1), depth(meta[2 * node]));
     }
 
+    /** Far slab distances are widened by this factor so rounding never culls a box the ray touches. */
+    private static final double WIDEN = 1 + 2 * raytracer.math.Rounding.gamma(3);
+
     /**
-     * Closest-hit traversal. Both children are tested at their parent; the ray descends into the
-     * one it enters first and stacks the other with its entry distance, which is skipped when
-     * popped if a hit closer than that has been found meanwhile.
+     * The distance at which the ray enters the box stored as six float bit patterns
+     * (x0, y0, z0, x1, y1, z1) at {@code b[i..i+6)}, clamped to 0 when it starts inside, or
+     * +infinity when it misses the box on (0, tMax). The ray comes as primitives, loaded once per
+     * traversal: origin, 1/d, 1/d widened for the far planes (pbrt-v3, section 3.9.2) and the
+     * offset (0 or 3) of each axis's near plane. The comparisons are ordered so that a NaN (an
+     * origin on a slab plane gives 0 * infinity) imposes no constraint instead of rejecting the box.
+     */
+    static double entry(int[] b, int i, double ox, double oy, double oz, double ix, double iy, double iz,
+                        double fx, double fy, double fz, int nx, int ny, int nz, double tMax) {
+        double tx0 = (Float.intBitsToFloat(b[i + nx]) - ox) * ix;
+        double tx1 = (Float.intBitsToFloat(b[i + 3 - nx]) - ox) * fx;
+        double ty0 = (Float.intBitsToFloat(b[i + 1 + ny]) - oy) * iy;
+        double ty1 = (Float.intBitsToFloat(b[i + 4 - ny]) - oy) * fy;
+        double tz0 = (Float.intBitsToFloat(b[i + 2 + nz]) - oz) * iz;
+        double tz1 = (Float.intBitsToFloat(b[i + 5 - nz]) - oz) * fz;
+        double t0 = tx0 > 0 ? tx0 : 0;
+        double t1 = tx1 < tMax ? tx1 : tMax;
+        t0 = ty0 > t0 ? ty0 : t0;
+        t1 = ty1 < t1 ? ty1 : t1;
+        t0 = tz0 > t0 ? tz0 : t0;
+        t1 = tz1 < t1 ? tz1 : t1;
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * Closest-hit traversal. Both children are tested from their parent's record; the ray descends
+     * into the one it enters first and stacks the other with its entry distance, which is skipped
+     * when popped if a hit closer than that has been found meanwhile. The stack holds (link, count)
+     * pairs.
      */
     boolean closestHit(Ray ray, ShadeRec sr, Leaves leaves) {
+        double ox = ray.ox;
+        double oy = ray.oy;
+        double oz = ray.oz;
+        double ix = ray.invDx;
+        double iy = ray.invDy;
+        double iz = ray.invDz;
+        double fx = ix * WIDEN;
+        double fy = iy * WIDEN;
+        double fz = iz * WIDEN;
+        int nx = ray.nearX;
+        int ny = ray.nearY;
+        int nz = ray.nearZ;
+        double tHit = sr.t;
         sr.boxTests++;
-        if (!(Slabs.entry(packed, 0, ray, sr.t) < sr.t)) {
+        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit) < tHit)) {
             return false;
         }
-        int[] nodes = packed;
+        int[] nodes = records;
         long tests = 0;
         int[] stack = sr.traversalStack;
         double[] stackT = sr.traversalEntry;
@@ -93,30 +172,36 @@ public final class FlatBVH {
         int sp = base;
         sr.stackBase = base + MAX_DEPTH;
         boolean hit = false;
-        int node = 0;
+        int link = rootLink;
+        int count = rootCount;
         while (true) {
-            int info = nodes[8 * node + 7];
-            if (info > 0) {
-                hit |= leaves.hit(nodes[8 * node + 6], info, ray, sr);
+            if (count > 0) {
+                if (leaves.hit(link, count, ray, sr)) {
+                    hit = true;
+                    tHit = sr.t;
+                }
             } else {
-                int left = node + 1;
-                int right = nodes[8 * node + 6];
+                int r = RECORD * link;
                 tests += 2;
-                double tLeft = Slabs.entry(nodes, 8 * left, ray, sr.t);
-                double tRight = Slabs.entry(nodes, 8 * right, ray, sr.t);
+                double tLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit);
+                double tRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit);
                 if (tLeft < Double.POSITIVE_INFINITY) {
                     if (tRight < Double.POSITIVE_INFINITY) {
-                        boolean leftFirst = tLeft <= tRight;
-                        stack[sp] = leftFirst ? right : left;
-                        stackT[sp++] = leftFirst ? tRight : tLeft;
-                        node = leftFirst ? left : right;
+                        int far = tLeft <= tRight ? 1 : 0;
+                        stack[2 * sp] = nodes[r + LINK + far];
+                        stack[2 * sp + 1] = nodes[r + COUNT + far];
+                        stackT[sp++] = far == 1 ? tRight : tLeft;
+                        link = nodes[r + LINK + 1 - far];
+                        count = nodes[r + COUNT + 1 - far];
                     } else {
-                        node = left;
+                        link = nodes[r + LINK];
+                        count = nodes[r + COUNT];
                     }
                     continue;
                 }
                 if (tRight < Double.POSITIVE_INFINITY) {
-                    node = right;
+                    link = nodes[r + LINK + 1];
+                    count = nodes[r + COUNT + 1];
                     continue;
                 }
             }
@@ -127,51 +212,72 @@ public final class FlatBVH {
                     sr.boxTests += tests;
                     return hit;
                 }
-                node = stack[--sp];
-            } while (stackT[sp] >= sr.t);
+                sp--;
+                link = stack[2 * sp];
+                count = stack[2 * sp + 1];
+            } while (stackT[sp] >= tHit);
         }
     }
 
-    /** Any-hit traversal for shadow rays: stops at the first blocker. */
+    /** Any-hit traversal for shadow rays: no ordering, stops at the first blocker. */
     boolean anyHit(Ray ray, double tMax, ShadeRec sr, Leaves leaves) {
+        double ox = ray.ox;
+        double oy = ray.oy;
+        double oz = ray.oz;
+        double ix = ray.invDx;
+        double iy = ray.invDy;
+        double iz = ray.invDz;
+        double fx = ix * WIDEN;
+        double fy = iy * WIDEN;
+        double fz = iz * WIDEN;
+        int nx = ray.nearX;
+        int ny = ray.nearY;
+        int nz = ray.nearZ;
         sr.boxTests++;
-        if (!(Slabs.entry(packed, 0, ray, tMax) < tMax)) {
+        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax) < tMax)) {
             return false;
         }
-        int[] nodes = packed;
+        int[] nodes = records;
         long tests = 0;
         int[] stack = sr.traversalStack;
         int base = sr.stackBase;
         int sp = base;
         sr.stackBase = base + MAX_DEPTH;
         boolean blocked = false;
-        int node = 0;
+        int link = rootLink;
+        int count = rootCount;
         while (!blocked) {
-            int info = nodes[8 * node + 7];
-            if (info > 0) {
-                blocked = leaves.shadowHit(nodes[8 * node + 6], info, ray, tMax, sr);
+            if (count > 0) {
+                blocked = leaves.shadowHit(link, count, ray, tMax, sr);
             } else {
-                int left = node + 1;
-                int right = nodes[8 * node + 6];
+                int r = RECORD * link;
                 tests += 2;
-                boolean hitLeft = Slabs.entry(nodes, 8 * left, ray, tMax) < Double.POSITIVE_INFINITY;
-                boolean hitRight = Slabs.entry(nodes, 8 * right, ray, tMax) < Double.POSITIVE_INFINITY;
+                boolean hitLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax)
+                                  < Double.POSITIVE_INFINITY;
+                boolean hitRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax)
+                                   < Double.POSITIVE_INFINITY;
                 if (hitLeft) {
                     if (hitRight) {
-                        stack[sp++] = right;
+                        stack[2 * sp] = nodes[r + LINK + 1];
+                        stack[2 * sp + 1] = nodes[r + COUNT + 1];
+                        sp++;
                     }
-                    node = left;
+                    link = nodes[r + LINK];
+                    count = nodes[r + COUNT];
                     continue;
                 }
                 if (hitRight) {
-                    node = right;
+                    link = nodes[r + LINK + 1];
+                    count = nodes[r + COUNT + 1];
                     continue;
                 }
             }
             if (sp == base) {
                 break;
             }
-            node = stack[--sp];
+            sp--;
+            link = stack[2 * sp];
+            count = stack[2 * sp + 1];
         }
         sr.stackBase = base;
         sr.boxTests += tests;

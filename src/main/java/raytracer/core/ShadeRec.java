@@ -32,10 +32,10 @@ public final class ShadeRec {
     private int nesting;
 
     /**
-     * Node stack for BVH traversal. A traversal nested in another (a mesh inside an object BVH) works
+     * Node stack for BVH traversal, two ints per entry. A traversal nested in another (a mesh inside an object BVH) works
      * above the outer one's entries, starting at {@link #stackBase}.
      */
-    public final int[] traversalStack = new int[MAX_NESTING * 64];
+    public final int[] traversalStack = new int[2 * MAX_NESTING * 64];
     /** Entry distance of each stacked node, to skip nodes beyond the closest hit found since. */
     public final double[] traversalEntry = new double[MAX_NESTING * 64];
     public int stackBase;

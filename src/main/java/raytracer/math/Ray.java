@@ -47,9 +47,10 @@ public final class Ray {
         invDx = 1.0 / dx;
         invDy = 1.0 / dy;
         invDz = 1.0 / dz;
-        nearX = dx < 0 ? 3 : 0;
-        nearY = dy < 0 ? 3 : 0;
-        nearZ = dz < 0 ? 3 : 0;
+        // by the sign of 1/d, not of d: a component -0.0 has 1/d = -infinity, so its near plane is the high one
+        nearX = invDx < 0 ? 3 : 0;
+        nearY = invDy < 0 ? 3 : 0;
+        nearZ = invDz < 0 ? 3 : 0;
         prepareShear();
         return this;
     }

@@ -22,26 +22,28 @@ public final class Watertight {
      * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched.
      */
     public static double intersect(Ray ray, double[] v, int a, int b, int c, double tMax, ShadeRec sr) {
+        // the ray's constants once, in locals, and the distance in a second method: both stay small
+        // enough for the JIT to inline them into the BVH traversal loop (HotSpot inlines hot
+        // methods up to 325 bytes of bytecode; at 399 this one was called for every triangle)
         int kx = ray.kx;
         int ky = ray.ky;
         int kz = ray.kz;
-        // vertices relative to the ray origin, in the (kx, ky, kz) axis order
-        double ax = v[a + kx] - ray.originKx;
-        double ay = v[a + ky] - ray.originKy;
-        double az = v[a + kz] - ray.originKz;
-        double bx = v[b + kx] - ray.originKx;
-        double by = v[b + ky] - ray.originKy;
-        double bz = v[b + kz] - ray.originKz;
-        double cx = v[c + kx] - ray.originKx;
-        double cy = v[c + ky] - ray.originKy;
-        double cz = v[c + kz] - ray.originKz;
-        // shear so that the ray direction becomes (0, 0, 1)
-        ax -= ray.shearX * az;
-        ay -= ray.shearY * az;
-        bx -= ray.shearX * bz;
-        by -= ray.shearY * bz;
-        cx -= ray.shearX * cz;
-        cy -= ray.shearY * cz;
+        double ox = ray.originKx;
+        double oy = ray.originKy;
+        double oz = ray.originKz;
+        double sx = ray.shearX;
+        double sy = ray.shearY;
+        // vertices relative to the ray origin in the (kx, ky, kz) axis order, sheared so that the
+        // ray direction becomes (0, 0, 1)
+        double az = v[a + kz] - oz;
+        double bz = v[b + kz] - oz;
+        double cz = v[c + kz] - oz;
+        double ax = v[a + kx] - ox - sx * az;
+        double ay = v[a + ky] - oy - sy * az;
+        double bx = v[b + kx] - ox - sx * bz;
+        double by = v[b + ky] - oy - sy * bz;
+        double cx = v[c + kx] - ox - sx * cz;
+        double cy = v[c + ky] - oy - sy * cz;
         // scaled barycentrics: 2D edge functions
         double u = cx * by - cy * bx;
         double w1 = ax * cy - ay * cx;
@@ -49,13 +51,17 @@ public final class Watertight {
         if ((u < 0 || w1 < 0 || w2 < 0) && (u > 0 || w1 > 0 || w2 > 0)) {
             return Double.POSITIVE_INFINITY;
         }
+        return distance(u, w1, w2, az, bz, cz, ray.shearZ, tMax, sr);
+    }
+
+    /** The hit distance from the scaled barycentrics u, w1, w2 and the vertices' sheared z. */
+    private static double distance(double u, double w1, double w2, double az, double bz, double cz, double sz,
+                                   double tMax, ShadeRec sr) {
         double det = u + w1 + w2;
         if (det == 0) {
             return Double.POSITIVE_INFINITY; // edge-on or degenerate
         }
-        double sz = ray.shearZ;
-        double scaledT = u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz);
-        double t = scaledT / det;
+        double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
         if (!(t > 0 && t < tMax)) {
             return Double.POSITIVE_INFINITY;
         }

@@ -106,4 +106,32 @@ class MeshBVHTest {
             }
         }
     }
+
+    /**
+     * A direction component of -0.0 has 1/d = -infinity; choosing the near slab by the sign of d
+     * (false for -0.0) put the entry distance at +infinity and culled every box.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"median", "sah"})
+    void raysWithNegativeZeroDirectionsFindTheMesh(String builder) {
+        Mesh mesh = soup(500, 7);
+        MeshBVH bvh = build(mesh, builder);
+        ShadeRec sr = BvhTesting.shadeRec();
+        Ray ray = new Ray();
+        int hits = 0;
+        for (int i = 0; i < 400; i++) {
+            double x = -1 + i / 200.0;
+            ray.set(x, 0.3, -3, 0.0, 0.0, 1);
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            boolean hit = bvh.hit(ray, sr);
+            double t = sr.t;
+            ray.set(x, 0.3, -3, -0.0, -0.0, 1);
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            assertEquals(hit, bvh.hit(ray, sr), "closest hit with -0.0 components, x = " + x);
+            assertEquals(t, sr.t, 0);
+            assertEquals(hit, bvh.shadowHit(ray, Double.POSITIVE_INFINITY, sr), "any hit with -0.0 components, x = " + x);
+            hits += hit ? 1 : 0;
+        }
+        assertTrue(hits > 50, "enough rays should hit to mean something: " + hits);
+    }
 }
