@@ -59,8 +59,8 @@ public class MeshTraversalBenchmark {
     public void setUp() throws Exception {
         String assets = System.getProperty("raytracer.assets", "../shared/assets");
         Mesh m = ObjLoader.load(Path.of(assets, "meshes", mesh), false).mesh();
-        double[] bounds = MeshBVH.triangleBounds(m);
-        FlatBVH tree = builder.equals("sah") ? new SahBuilder(4).build(bounds) : new MedianSplitBuilder(4).build(bounds);
+        FlatBVH tree = builder.equals("sah") ? new SahBuilder(4).build(MeshBVH.triangleBounds(m))
+                                             : new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(m));
         bvh = new MeshBVH(m, tree, List.of());
         World world = new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 1, 1),
             new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE));

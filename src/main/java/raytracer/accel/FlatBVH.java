@@ -4,75 +4,75 @@ import raytracer.core.ShadeRec;
 import raytracer.math.Ray;
 
 /**
- * A BVH flattened into arrays in depth-first order, as pbrt stores it: node i's left child is
- * i + 1; {@code meta[2i]} is the right child (interior) or the first entry in {@code order} (leaf),
- * and {@code meta[2i + 1]} is -(split axis + 1) for an interior node or the primitive count of a leaf.
- * Bounds are the exact unions of the primitives' own bounds ({@link #bounds}, doubles).
- *
- * <p>For traversal the interior nodes are also packed into 64-byte {@link #records} holding their
- * children's boxes.
+ * A BVH flattened into arrays for traversal. Each interior node is one record of 16 ints (64
+ * bytes, a cache line), records in depth-first order of the interior nodes: both children's boxes
+ * as floats rounded outward, so a box never shrinks ({@link #LEFT_BOX}, {@link #RIGHT_BOX}, six
+ * each: x0, y0, z0, x1, y1, z1), then each child's link ({@link #LINK}) and primitive count
+ * ({@link #COUNT}). A leaf child has a count above 0 and links to its first entry in
+ * {@link #order} (its primitives are order[link .. link + count)); an interior child has count 0
+ * and links to its record. Testing both children from their parent's record reads one line per
+ * visited node (see README, "BVH layout"). The root's own box, link and count are kept apart.
  */
 public final class FlatBVH {
     /** Deepest tree the builders produce; traversal stacks are this big. */
     public static final int MAX_DEPTH = 64;
-
-    final double[] bounds;
-    final int[] meta;
-    final int[] order;
-    final int nodeCount;
-
-    /**
-     * The traversal layout: one record of 16 ints (64 bytes, a cache line) per interior node, in
-     * depth-first order of the interior nodes. A record holds both children's boxes as floats
-     * rounded outward, so the box never shrinks ({@link #LEFT_BOX}, {@link #RIGHT_BOX}, six each),
-     * then each child's link ({@link #LINK}) and primitive count ({@link #COUNT}): a leaf has a
-     * count above 0 and links to its first entry in {@link #order}; an interior child has count 0
-     * and links to its record. Testing both children from their parent's record reads one line per
-     * visited node instead of the parent's and the far child's (see README, "BVH layout").
-     */
-    final int[] records;
     static final int RECORD = 16;
     static final int LEFT_BOX = 0;
     static final int RIGHT_BOX = 6;
     static final int LINK = 12;
     static final int COUNT = 14;
-    /** The root's box (float bits, rounded outward), link and count, as a record's child entries. */
-    private final int[] rootBox = new int[6];
-    private final int rootLink;
-    private final int rootCount;
 
-    FlatBVH(double[] bounds, int[] meta, int[] order, int nodeCount) {
-        this.bounds = bounds;
-        this.meta = meta;
+    final int[] records;
+    final int[] order;
+    private final int nodeCount;
+    /** The root's box as float bits (rounded outward), its link and count, as a record's child entries. */
+    final int[] rootBox;
+    final int rootLink;
+    final int rootCount;
+
+    FlatBVH(int[] records, int[] order, int[] rootBox, int rootLink, int rootCount, int nodeCount) {
+        this.records = records;
         this.order = order;
+        this.rootBox = rootBox;
+        this.rootLink = rootLink;
+        this.rootCount = rootCount;
         this.nodeCount = nodeCount;
-        // record index of each interior node, in depth-first order
+    }
+
+    /**
+     * Packs a tree given node by node in depth-first order, as the SAH builder makes it: node i's
+     * left child is i + 1; {@code meta[2i]} is the right child (interior) or the first entry in
+     * {@code order} (leaf), {@code meta[2i + 1]} is negative for an interior node or the primitive
+     * count of a leaf; {@code bounds[6i .. 6i + 6)} is node i's box.
+     */
+    static FlatBVH fromNodes(double[] bounds, int[] meta, int[] order, int nodeCount) {
         int[] record = new int[nodeCount];
         int interior = 0;
         for (int node = 0; node < nodeCount; node++) {
-            record[node] = isLeaf(node) ? -1 : interior++;
+            record[node] = meta[2 * node + 1] > 0 ? -1 : interior++;
         }
-        records = new int[RECORD * interior];
+        int[] records = new int[RECORD * interior];
         for (int node = 0; node < nodeCount; node++) {
-            if (isLeaf(node)) {
+            if (record[node] < 0) {
                 continue;
             }
             int r = RECORD * record[node];
-            int left = node + 1;
-            int right = meta[2 * node];
-            packBox(left, records, r + LEFT_BOX);
-            packBox(right, records, r + RIGHT_BOX);
-            records[r + LINK] = isLeaf(left) ? meta[2 * left] : record[left];
-            records[r + LINK + 1] = isLeaf(right) ? meta[2 * right] : record[right];
-            records[r + COUNT] = isLeaf(left) ? meta[2 * left + 1] : 0;
-            records[r + COUNT + 1] = isLeaf(right) ? meta[2 * right + 1] : 0;
+            int[] children = {node + 1, meta[2 * node]};
+            for (int side = 0; side < 2; side++) {
+                int child = children[side];
+                packBox(bounds, child, records, r + (side == 0 ? LEFT_BOX : RIGHT_BOX));
+                boolean leaf = record[child] < 0;
+                records[r + LINK + side] = leaf ? meta[2 * child] : record[child];
+                records[r + COUNT + side] = leaf ? meta[2 * child + 1] : 0;
+            }
         }
-        packBox(0, rootBox, 0);
-        rootLink = isLeaf(0) ? meta[0] : 0;
-        rootCount = isLeaf(0) ? meta[1] : 0;
+        int[] rootBox = new int[6];
+        packBox(bounds, 0, rootBox, 0);
+        boolean rootIsLeaf = record[0] < 0;
+        return new FlatBVH(records, order, rootBox, rootIsLeaf ? meta[0] : 0, rootIsLeaf ? meta[1] : 0, nodeCount);
     }
 
-    private void packBox(int node, int[] out, int at) {
+    private static void packBox(double[] bounds, int node, int[] out, int at) {
         for (int k = 0; k < 3; k++) {
             out[at + k] = Float.floatToRawIntBits(roundDown(bounds[6 * node + k]));
             out[at + 3 + k] = Float.floatToRawIntBits(roundUp(bounds[6 * node + 3 + k]));
@@ -99,17 +99,23 @@ public final class FlatBVH {
         return order.length;
     }
 
-    boolean isLeaf(int node) {
-        return meta[2 * node + 1] > 0;
+    /** Coordinate k (x0, y0, z0, x1, y1, z1) of the root's box. */
+    double rootBound(int k) {
+        return Float.intBitsToFloat(rootBox[k]);
     }
 
     /** Depth of the deepest leaf, for statistics. */
     public int depth() {
-        return depth(0);
+        return rootCount > 0 ? 1 : 1 + recordDepth(rootLink);
     }
 
-    private int depth(int node) {
-        return isLeaf(node) ? 1 : 1 + Math.max(depth(node + 1), depth(meta[2 * node]));
+    private int recordDepth(int record) {
+        int deepest = 0;
+        for (int side = 0; side < 2; side++) {
+            int r = RECORD * record;
+            deepest = Math.max(deepest, records[r + COUNT + side] > 0 ? 1 : 1 + recordDepth(records[r + LINK + side]));
+        }
+        return deepest;
     }
 
     /** Far slab distances are widened by this factor so rounding never culls a box the ray touches. */

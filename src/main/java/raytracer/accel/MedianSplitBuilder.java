@@ -8,11 +8,16 @@ import java.util.concurrent.RecursiveAction;
 /**
  * The report's BVH (section 6): split each node on the longest axis of its box, order its
  * primitives by centroid along that axis and halve them at the median; the children may overlap.
- * Instead of sorting at every level, a quickselect puts the median in place with the smaller
- * half before it, which is O(n) per level and O(n log n) in all.
+ * Instead of sorting at every level, a quickselect ({@link BoxSelect}) puts the median in place with
+ * the smaller half before it: O(n) per level, O(n log n) in all.
+ *
+ * <p>The primitives' boxes are floats rounded outward and travel with their primitive through the
+ * selections, so every pass over a node's primitives reads one contiguous run of memory (an index
+ * array into boxes in file order made each pass a random walk). The children's boxes are found by
+ * one pass at their parent and written straight into its traversal record.
  *
  * <p>Because a node always halves its count, the size of every subtree follows from its count
- * alone; each subtree therefore knows its place in the depth-first arrays before it is built, and
+ * alone; each subtree therefore knows its place in the depth-first records before it is built, and
  * large subtrees are built in parallel with the same result as a serial build.
  */
 public final class MedianSplitBuilder {
@@ -30,133 +35,164 @@ public final class MedianSplitBuilder {
 
     /** Builds over primitives whose boxes are {@code primBounds[6i .. 6i+6)} = (x0, y0, z0, x1, y1, z1). */
     public FlatBVH build(double[] primBounds) {
-        int n = primBounds.length / 6;
-        if (n == 0) {
-            throw new IllegalArgumentException("a BVH needs at least one primitive");
-        }
-        double[] centroids = new double[3 * n];
-        int[] order = new int[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
+        float[] boxes = new float[primBounds.length];
+        for (int i = 0; i < primBounds.length; i += 6) {
             for (int k = 0; k < 3; k++) {
-                centroids[3 * i + k] = 0.5 * (primBounds[6 * i + k] + primBounds[6 * i + 3 + k]);
+                boxes[i + k] = FlatBVH.roundDown(primBounds[i + k]);
+                boxes[i + 3 + k] = FlatBVH.roundUp(primBounds[i + 3 + k]);
             }
         }
-        Map<Integer, Integer> sizes = new HashMap<>();
-        int nodes = subtreeNodes(n, sizes);
-        double[] bounds = new double[6 * nodes];
-        int[] meta = new int[2 * nodes];
-        Job root = new Job(primBounds, centroids, order, bounds, meta, sizes, 0, 0, n);
-        if (n > PARALLEL_THRESHOLD) {
-            ForkJoinPool.commonPool().invoke(root);
-        } else {
-            root.compute();
-        }
-        return new FlatBVH(bounds, meta, order, nodes);
+        return build(boxes);
     }
 
     /**
-     * Nodes in a subtree over {@code count} primitives: one leaf, or a node and two halves. Only two
-     * counts occur per level, so the memo stays tiny; it is filled before the parallel build and
-     * only read during it.
+     * Builds over primitives whose boxes are the floats {@code boxes[6i .. 6i+6)}, already rounded
+     * outward. The array is reordered in place into the leaf order.
      */
-    private int subtreeNodes(int count, Map<Integer, Integer> memo) {
+    public FlatBVH build(float[] boxes) {
+        int n = boxes.length / 6;
+        if (n == 0) {
+            throw new IllegalArgumentException("a BVH needs at least one primitive");
+        }
+        int[] order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        float[] root = new float[6];
+        BoxSelect.union(boxes, 0, n, root, 0);
+        int[] rootBox = new int[6];
+        for (int k = 0; k < 6; k++) {
+            rootBox[k] = Float.floatToRawIntBits(root[k]);
+        }
+        Map<Integer, Integer> sizes = new HashMap<>();
+        int interior = interiorNodes(n, sizes);
+        if (n <= leafSize) {
+            return new FlatBVH(new int[0], order, rootBox, 0, n, 1);
+        }
+        int[] records = new int[FlatBVH.RECORD * interior];
+        Job job = new Job(boxes, order, records, sizes, 0, 0, n, longestAxis(root, 0));
+        if (n > PARALLEL_THRESHOLD) {
+            ForkJoinPool.commonPool().invoke(job);
+        } else {
+            job.compute();
+        }
+        return new FlatBVH(records, order, rootBox, 0, 0, 2 * interior + 1);
+    }
+
+    /**
+     * Interior nodes in a subtree over {@code count} primitives (a binary tree has one leaf more).
+     * Only two counts occur per level, so the memo stays tiny; it is filled before the parallel
+     * build and only read during it.
+     */
+    private int interiorNodes(int count, Map<Integer, Integer> memo) {
         if (count <= leafSize) {
-            return 1;
+            return 0;
         }
         Integer known = memo.get(count);
         if (known != null) {
             return known;
         }
         int half = count / 2;
-        int nodes = 1 + subtreeNodes(half, memo) + subtreeNodes(count - half, memo);
+        int nodes = 1 + interiorNodes(half, memo) + interiorNodes(count - half, memo);
         memo.put(count, nodes);
         return nodes;
     }
 
-    /** Builds the subtree over order[from, to) into node index {@code node} and after. */
+    private static int longestAxis(float[] box, int at) {
+        float ex = box[at + 3] - box[at];
+        float ey = box[at + 4] - box[at + 1];
+        float ez = box[at + 5] - box[at + 2];
+        return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
+    }
+
+    /**
+     * Halves positions [from, to) at their median on {@code axis} and writes both children's boxes
+     * into {@code record}; returns the boxes (left, then right) so the children can pick their axes.
+     */
+    private static float[] halve(float[] boxes, int[] order, int[] records, int record, int from, int to, int axis) {
+        int mid = from + (to - from) / 2;
+        BoxSelect.nth(boxes, order, axis, from, to, mid);
+        float[] childBoxes = new float[12];
+        BoxSelect.union(boxes, from, mid, childBoxes, 0);
+        BoxSelect.union(boxes, mid, to, childBoxes, 6);
+        int r = FlatBVH.RECORD * record;
+        for (int k = 0; k < 12; k++) {
+            records[r + k] = Float.floatToRawIntBits(childBoxes[k]);
+        }
+        return childBoxes;
+    }
+
+    /**
+     * Builds the subtree over positions [from, to), more than a leaf, depth-first into
+     * {@code record} and the records after it; returns the first record after the subtree. The
+     * right child's record is known once the left subtree is done, so no size table is needed.
+     */
+    private int buildSerial(float[] boxes, int[] order, int[] records, int record, int from, int to, int axis) {
+        float[] childBoxes = halve(boxes, order, records, record, from, to, axis);
+        int mid = from + (to - from) / 2;
+        int r = FlatBVH.RECORD * record;
+        int next = record + 1;
+        if (mid - from <= leafSize) {
+            records[r + FlatBVH.LINK] = from;
+            records[r + FlatBVH.COUNT] = mid - from;
+        } else {
+            records[r + FlatBVH.LINK] = next;
+            next = buildSerial(boxes, order, records, next, from, mid, longestAxis(childBoxes, 0));
+        }
+        if (to - mid <= leafSize) {
+            records[r + FlatBVH.LINK + 1] = mid;
+            records[r + FlatBVH.COUNT + 1] = to - mid;
+        } else {
+            records[r + FlatBVH.LINK + 1] = next;
+            next = buildSerial(boxes, order, records, next, mid, to, longestAxis(childBoxes, 6));
+        }
+        return next;
+    }
+
+    /**
+     * Builds the subtree over positions [from, to) into record {@code record} and after: above
+     * {@link #PARALLEL_THRESHOLD} primitives both halves become parallel tasks, whose record
+     * numbers come from {@link #interiorNodes}; below it, {@link #buildSerial}.
+     */
     private final class Job extends RecursiveAction {
         private static final long serialVersionUID = 1L;
-        private final transient double[] primBounds;
-        private final transient double[] centroids;
+        private final transient float[] boxes;
         private final transient int[] order;
-        private final transient double[] bounds;
-        private final transient int[] meta;
+        private final transient int[] records;
         private final transient Map<Integer, Integer> sizes;
-        private final int node;
+        private final int record;
         private final int from;
         private final int to;
+        private final int axis;
 
-        Job(double[] primBounds, double[] centroids, int[] order, double[] bounds, int[] meta,
-            Map<Integer, Integer> sizes, int node, int from, int to) {
-            this.primBounds = primBounds;
-            this.centroids = centroids;
+        Job(float[] boxes, int[] order, int[] records, Map<Integer, Integer> sizes, int record, int from, int to,
+            int axis) {
+            this.boxes = boxes;
             this.order = order;
-            this.bounds = bounds;
-            this.meta = meta;
+            this.records = records;
             this.sizes = sizes;
-            this.node = node;
+            this.record = record;
             this.from = from;
             this.to = to;
+            this.axis = axis;
         }
 
         @Override
         protected void compute() {
-            int count = to - from;
-            unionBounds(node, from, to);
-            if (count <= leafSize) {
-                meta[2 * node] = from;
-                meta[2 * node + 1] = count;
+            if (to - from <= PARALLEL_THRESHOLD) {
+                buildSerial(boxes, order, records, record, from, to, axis);
                 return;
             }
-            int axis = longestAxis(node);
-            int mid = from + count / 2;
-            Select.nth(order, centroids, axis, from, to, mid);
-            int left = node + 1;
-            int right = left + subtreeNodes(mid - from, sizes);
-            meta[2 * node] = right;
-            meta[2 * node + 1] = -(axis + 1);
-            Job leftJob = new Job(primBounds, centroids, order, bounds, meta, sizes, left, from, mid);
-            Job rightJob = new Job(primBounds, centroids, order, bounds, meta, sizes, right, mid, to);
-            if (count > PARALLEL_THRESHOLD) {
-                invokeAll(leftJob, rightJob);
-            } else {
-                leftJob.compute();
-                rightJob.compute();
-            }
-        }
-
-        private void unionBounds(int target, int lo, int hi) {
-            double x0 = Double.POSITIVE_INFINITY;
-            double y0 = Double.POSITIVE_INFINITY;
-            double z0 = Double.POSITIVE_INFINITY;
-            double x1 = Double.NEGATIVE_INFINITY;
-            double y1 = Double.NEGATIVE_INFINITY;
-            double z1 = Double.NEGATIVE_INFINITY;
-            for (int i = lo; i < hi; i++) {
-                int p = 6 * order[i];
-                x0 = Math.min(x0, primBounds[p]);
-                y0 = Math.min(y0, primBounds[p + 1]);
-                z0 = Math.min(z0, primBounds[p + 2]);
-                x1 = Math.max(x1, primBounds[p + 3]);
-                y1 = Math.max(y1, primBounds[p + 4]);
-                z1 = Math.max(z1, primBounds[p + 5]);
-            }
-            int b = 6 * target;
-            bounds[b] = x0;
-            bounds[b + 1] = y0;
-            bounds[b + 2] = z0;
-            bounds[b + 3] = x1;
-            bounds[b + 4] = y1;
-            bounds[b + 5] = z1;
-        }
-
-        private int longestAxis(int target) {
-            int b = 6 * target;
-            double ex = bounds[b + 3] - bounds[b];
-            double ey = bounds[b + 4] - bounds[b + 1];
-            double ez = bounds[b + 5] - bounds[b + 2];
-            return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
+            float[] childBoxes = halve(boxes, order, records, record, from, to, axis);
+            int mid = from + (to - from) / 2;
+            // both halves are far above a leaf here
+            int leftRecord = record + 1;
+            int rightRecord = leftRecord + interiorNodes(mid - from, sizes);
+            int r = FlatBVH.RECORD * record;
+            records[r + FlatBVH.LINK] = leftRecord;
+            records[r + FlatBVH.LINK + 1] = rightRecord;
+            invokeAll(new Job(boxes, order, records, sizes, leftRecord, from, mid, longestAxis(childBoxes, 0)),
+                      new Job(boxes, order, records, sizes, rightRecord, mid, to, longestAxis(childBoxes, 6)));
         }
     }
 }

@@ -94,6 +94,27 @@ public final class MeshBVH extends GeometricObject implements Leaves {
         return b;
     }
 
+    /**
+     * The bounds of every triangle as floats rounded outward, six each, as
+     * {@link MedianSplitBuilder#build(float[])} takes them: half the memory of doubles, and the
+     * traversal stores floats anyway.
+     */
+    public static float[] triangleBoxes(Mesh mesh) {
+        double[] p = mesh.positions();
+        int n = mesh.triangleCount();
+        float[] b = new float[6 * n];
+        for (int t = 0; t < n; t++) {
+            int a = mesh.corner(t, 0);
+            int c1 = mesh.corner(t, 1);
+            int c2 = mesh.corner(t, 2);
+            for (int k = 0; k < 3; k++) {
+                b[6 * t + k] = FlatBVH.roundDown(Math.min(p[a + k], Math.min(p[c1 + k], p[c2 + k])));
+                b[6 * t + 3 + k] = FlatBVH.roundUp(Math.max(p[a + k], Math.max(p[c1 + k], p[c2 + k])));
+            }
+        }
+        return b;
+    }
+
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
         return bvh.closestHit(ray, sr, this);
@@ -246,8 +267,8 @@ public final class MeshBVH extends GeometricObject implements Leaves {
 
     @Override
     public BBox boundingBox() {
-        double[] b = bvh.bounds;
-        return new BBox(b[0], b[1], b[2], b[3], b[4], b[5]);
+        return new BBox(bvh.rootBound(0), bvh.rootBound(1), bvh.rootBound(2),
+                        bvh.rootBound(3), bvh.rootBound(4), bvh.rootBound(5));
     }
 
     public FlatBVH bvh() {

@@ -81,8 +81,8 @@ public final class ObjectBVH extends GeometricObject implements Leaves {
 
     @Override
     public BBox boundingBox() {
-        double[] b = bvh.bounds;
-        return new BBox(b[0], b[1], b[2], b[3], b[4], b[5]);
+        return new BBox(bvh.rootBound(0), bvh.rootBound(1), bvh.rootBound(2),
+                        bvh.rootBound(3), bvh.rootBound(4), bvh.rootBound(5));
     }
 
     public FlatBVH bvh() {

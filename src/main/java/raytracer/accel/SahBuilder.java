@@ -29,8 +29,7 @@ public final class SahBuilder {
         }
         State s = new State(primBounds, n);
         buildNode(s, 0, n, 1);
-        return new FlatBVH(Arrays.copyOf(s.bounds, 6 * s.nodeCount), Arrays.copyOf(s.meta, 2 * s.nodeCount),
-                           s.order, s.nodeCount);
+        return FlatBVH.fromNodes(s.bounds, s.meta, s.order, s.nodeCount);
     }
 
     /** Build-time arrays; nodes are appended depth-first, so a node's left child follows it. */

@@ -15,8 +15,8 @@ import raytracer.shapes.mesh.Mesh;
 class MeshBVHTest {
 
     private static MeshBVH build(Mesh mesh, String builder) {
-        double[] bounds = MeshBVH.triangleBounds(mesh);
-        FlatBVH bvh = builder.equals("sah") ? new SahBuilder(4).build(bounds) : new MedianSplitBuilder(4).build(bounds);
+        FlatBVH bvh = builder.equals("sah") ? new SahBuilder(4).build(MeshBVH.triangleBounds(mesh))
+                                            : new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(mesh));
         return new MeshBVH(mesh, bvh, List.of());
     }
 
@@ -94,17 +94,43 @@ class MeshBVHTest {
             assertTrue(s, "every triangle appears in the leaf order");
         }
         assertTrue(bvh.depth() < FlatBVH.MAX_DEPTH);
-        // every node's box contains its children's boxes
-        for (int node = 0; node < bvh.nodeCount(); node++) {
-            if (!bvh.isLeaf(node)) {
-                for (int child : new int[] {node + 1, bvh.meta[2 * node]}) {
-                    for (int k = 0; k < 3; k++) {
-                        assertTrue(bvh.bounds[6 * node + k] <= bvh.bounds[6 * child + k]);
-                        assertTrue(bvh.bounds[6 * node + 3 + k] >= bvh.bounds[6 * child + 3 + k]);
-                    }
+        // every node's box contains its children's boxes, and every leaf's box its triangles' boxes
+        double[] triangles = MeshBVH.triangleBounds(mesh);
+        float[] root = new float[6];
+        for (int k = 0; k < 6; k++) {
+            root[k] = (float) bvh.rootBound(k);
+        }
+        int leaves = checkContains(bvh, root, bvh.rootLink, bvh.rootCount, triangles);
+        assertEquals(bvh.nodeCount(), 2 * leaves - 1, "a binary tree has one leaf more than interior nodes");
+    }
+
+    /** Checks the subtree under a child entry (link, count) with box {@code box}; returns its leaves. */
+    private static int checkContains(FlatBVH bvh, float[] box, int link, int count, double[] triangles) {
+        if (count > 0) {
+            for (int i = link; i < link + count; i++) {
+                int t = bvh.order[i];
+                for (int k = 0; k < 3; k++) {
+                    assertTrue(box[k] <= triangles[6 * t + k], "leaf box below triangle " + t);
+                    assertTrue(box[3 + k] >= triangles[6 * t + 3 + k], "leaf box above triangle " + t);
                 }
             }
+            return 1;
         }
+        int leaves = 0;
+        for (int side = 0; side < 2; side++) {
+            int r = FlatBVH.RECORD * link;
+            float[] child = new float[6];
+            for (int k = 0; k < 6; k++) {
+                child[k] = Float.intBitsToFloat(bvh.records[r + (side == 0 ? FlatBVH.LEFT_BOX : FlatBVH.RIGHT_BOX) + k]);
+            }
+            for (int k = 0; k < 3; k++) {
+                assertTrue(box[k] <= child[k]);
+                assertTrue(box[3 + k] >= child[3 + k]);
+            }
+            leaves += checkContains(bvh, child, bvh.records[r + FlatBVH.LINK + side], bvh.records[r + FlatBVH.COUNT + side],
+                                    triangles);
+        }
+        return leaves;
     }
 
     /**

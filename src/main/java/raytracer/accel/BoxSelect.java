@@ -1,0 +1,128 @@
+package raytracer.accel;
+
+/**
+ * Quickselect (Hoare's FIND, 1961) over primitives stored as float boxes (six per primitive) with
+ * their ids beside them, keyed by the box's centroid on one axis: afterwards position k holds the
+ * primitive a full sort would put there, with no larger key before it and no smaller key after it.
+ * Expected O(n); median-of-three pivots avoid the sorted-input worst case. Boxes move with their
+ * ids, so the passes read memory in order.
+ */
+final class BoxSelect {
+    /** Ranges this short are finished by insertion sort. */
+    private static final int SMALL = 12;
+
+    private BoxSelect() {
+    }
+
+    static void nth(float[] boxes, int[] ids, int axis, int from, int to, int k) {
+        int lo = from;
+        int hi = to - 1;
+        while (hi - lo >= SMALL) {
+            int mid = (lo + hi) >>> 1;
+            // median of three to the middle, as pivot
+            if (key(boxes, axis, mid) < key(boxes, axis, lo)) {
+                swap(boxes, ids, mid, lo);
+            }
+            if (key(boxes, axis, hi) < key(boxes, axis, lo)) {
+                swap(boxes, ids, hi, lo);
+            }
+            if (key(boxes, axis, hi) < key(boxes, axis, mid)) {
+                swap(boxes, ids, hi, mid);
+            }
+            long split = partition(boxes, ids, axis, lo, hi, key(boxes, axis, mid));
+            int i = (int) (split >>> 32);
+            int j = (int) split;
+            if (k <= j) {
+                hi = j;
+            } else if (k >= i) {
+                lo = i;
+            } else {
+                return; // j < k < i: k holds the pivot value
+            }
+        }
+        insertionSort(boxes, ids, axis, lo, hi);
+    }
+
+    /**
+     * Hoare's partition of [lo, hi] around {@code pivot}: equal keys stop both scans, so runs of
+     * equal keys still split evenly. Returns the final scan positions i (high 32 bits) and j (low):
+     * keys at or before j are not above the pivot, keys at or after i are not below it. A method of
+     * its own, like {@link #insertionSort}, so that the JIT compiles each loop early and on its own.
+     */
+    private static long partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivot) {
+        int i = lo;
+        int j = hi;
+        while (i <= j) {
+            while (key(boxes, axis, i) < pivot) {
+                i++;
+            }
+            while (key(boxes, axis, j) > pivot) {
+                j--;
+            }
+            if (i <= j) {
+                swap(boxes, ids, i, j);
+                i++;
+                j--;
+            }
+        }
+        return (long) i << 32 | (j & 0xffffffffL);
+    }
+
+    private static void insertionSort(float[] boxes, int[] ids, int axis, int lo, int hi) {
+        for (int i = lo + 1; i <= hi; i++) {
+            for (int j = i; j > lo && key(boxes, axis, j) < key(boxes, axis, j - 1); j--) {
+                swap(boxes, ids, j, j - 1);
+            }
+        }
+    }
+
+    /** Twice the centroid on the axis: the same order, one operation less. */
+    private static float key(float[] boxes, int axis, int i) {
+        return boxes[6 * i + axis] + boxes[6 * i + 3 + axis];
+    }
+
+    private static void swap(float[] boxes, int[] ids, int a, int b) {
+        int id = ids[a];
+        ids[a] = ids[b];
+        ids[b] = id;
+        int pa = 6 * a;
+        int pb = 6 * b;
+        for (int c = 0; c < 6; c++) {
+            float t = boxes[pa + c];
+            boxes[pa + c] = boxes[pb + c];
+            boxes[pb + c] = t;
+        }
+    }
+
+    /** The union of the boxes at positions [from, to), written to out[at .. at + 6). */
+    static void union(float[] boxes, int from, int to, float[] out, int at) {
+        float x0 = Float.POSITIVE_INFINITY;
+        float y0 = Float.POSITIVE_INFINITY;
+        float z0 = Float.POSITIVE_INFINITY;
+        float x1 = Float.NEGATIVE_INFINITY;
+        float y1 = Float.NEGATIVE_INFINITY;
+        float z1 = Float.NEGATIVE_INFINITY;
+        // comparisons rather than Math.min/max: a running extreme rarely changes, so the branches
+        // predict well, where Math.min's NaN-and-zero handling costs a blend sequence per value
+        for (int p = 6 * from; p < 6 * to; p += 6) {
+            float v = boxes[p];
+            x0 = v < x0 ? v : x0;
+            v = boxes[p + 1];
+            y0 = v < y0 ? v : y0;
+            v = boxes[p + 2];
+            z0 = v < z0 ? v : z0;
+            v = boxes[p + 3];
+            x1 = v > x1 ? v : x1;
+            v = boxes[p + 4];
+            y1 = v > y1 ? v : y1;
+            v = boxes[p + 5];
+            z1 = v > z1 ? v : z1;
+        }
+        out[at] = x0;
+        out[at + 1] = y0;
+        out[at + 2] = z0;
+        out[at + 3] = x1;
+        out[at + 4] = y1;
+        out[at + 5] = z1;
+    }
+}
