@@ -51,19 +51,22 @@ public final class MeshBVH extends GeometricObject implements Leaves {
         this.tangentSpace = new boolean[normalMaps.length];
         int[] renumbered = new int[mesh.vertexCount()];
         Arrays.fill(renumbered, -1);
-        leafCorners = new int[3 * bvh.order.length];
+        int[] order = bvh.order;
+        int[] corners = mesh.triangles();
+        leafCorners = new int[3 * order.length];
         double[] p = new double[positions.length];
         int next = 0;
-        for (int k = 0; k < bvh.order.length; k++) {
-            for (int c = 0; c < 3; c++) {
-                int v = mesh.vertex(bvh.order[k], c);
-                if (renumbered[v] < 0) {
-                    renumbered[v] = next;
-                    System.arraycopy(positions, 3 * v, p, 3 * next, 3);
-                    next++;
-                }
-                leafCorners[3 * k + c] = 3 * renumbered[v];
+        for (int k = 0; k < 3 * order.length; k++) {
+            int v = corners[3 * order[k / 3] + k % 3];
+            int to = renumbered[v];
+            if (to < 0) {
+                to = 3 * next++;
+                renumbered[v] = to;
+                p[to] = positions[3 * v];
+                p[to + 1] = positions[3 * v + 1];
+                p[to + 2] = positions[3 * v + 2];
             }
+            leafCorners[k] = to;
         }
         leafPositions = next == mesh.vertexCount() ? p : Arrays.copyOf(p, 3 * next);
     }
@@ -101,18 +104,45 @@ public final class MeshBVH extends GeometricObject implements Leaves {
      */
     public static float[] triangleBoxes(Mesh mesh) {
         double[] p = mesh.positions();
-        int n = mesh.triangleCount();
-        float[] b = new float[6 * n];
-        for (int t = 0; t < n; t++) {
-            int a = mesh.corner(t, 0);
-            int c1 = mesh.corner(t, 1);
-            int c2 = mesh.corner(t, 2);
-            for (int k = 0; k < 3; k++) {
-                b[6 * t + k] = FlatBVH.roundDown(Math.min(p[a + k], Math.min(p[c1 + k], p[c2 + k])));
-                b[6 * t + 3 + k] = FlatBVH.roundUp(Math.max(p[a + k], Math.max(p[c1 + k], p[c2 + k])));
-            }
+        int[] corners = mesh.triangles();
+        float[] b = new float[6 * mesh.triangleCount()];
+        for (int t = 0; t < mesh.triangleCount(); t++) {
+            triangleBox(p, corners, t, b);
         }
         return b;
+    }
+
+    /**
+     * One triangle's box. A method of its own so that on a fresh JVM it is compiled after a few
+     * hundred calls, while a loop body waits for tens of thousands of iterations before the JIT
+     * replaces it (the mesh is loaded once, so this start-up phase is much of its cost).
+     */
+    private static void triangleBox(double[] p, int[] corners, int t, float[] b) {
+        int a = 3 * corners[3 * t];
+        int c1 = 3 * corners[3 * t + 1];
+        int c2 = 3 * corners[3 * t + 2];
+        for (int k = 0; k < 3; k++) {
+            double pa = p[a + k];
+            double pb = p[c1 + k];
+            double pc = p[c2 + k];
+            b[6 * t + k] = below(pa < pb ? (pa < pc ? pa : pc) : (pb < pc ? pb : pc));
+            b[6 * t + 3 + k] = above(pa > pb ? (pa > pc ? pa : pc) : (pb > pc ? pb : pc));
+        }
+    }
+
+    /**
+     * A float not above d, without a branch: the float nearest to x is within 2^-24 |x| of it (or
+     * 2^-150 below the normal range), so stepping down by 2^-22 |d| + 2^-149 first is enough. At
+     * most a few float ulps below d, where {@link FlatBVH#roundDown} is exact but branches on
+     * which way the cast went.
+     */
+    static float below(double d) {
+        return (float) Math.min(d - (Math.abs(d) * 0x1p-22 + Float.MIN_VALUE), Float.MAX_VALUE);
+    }
+
+    /** A float not below d, as {@link #below}. */
+    static float above(double d) {
+        return (float) Math.max(d + (Math.abs(d) * 0x1p-22 + Float.MIN_VALUE), -Float.MAX_VALUE);
     }
 
     @Override

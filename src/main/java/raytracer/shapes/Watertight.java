@@ -48,21 +48,26 @@ public final class Watertight {
         double u = cx * by - cy * bx;
         double w1 = ax * cy - ay * cx;
         double w2 = bx * ay - by * ax;
-        if ((u < 0 || w1 < 0 || w2 < 0) && (u > 0 || w1 > 0 || w2 > 0)) {
+        // outside when the edge functions have both signs (a zero counts as either). Math.min/max
+        // rather than six comparisons: no branch here is rare enough for the JIT to leave it out
+        // and then throw its compiled code away the first time it is taken
+        if (Math.min(u, Math.min(w1, w2)) < 0 && Math.max(u, Math.max(w1, w2)) > 0) {
             return Double.POSITIVE_INFINITY;
         }
         return distance(u, w1, w2, az, bz, cz, ray.shearZ, tMax, sr);
     }
 
-    /** The hit distance from the scaled barycentrics u, w1, w2 and the vertices' sheared z. */
+    /**
+     * The hit distance from the scaled barycentrics u, w1, w2 and the vertices' sheared z. An
+     * edge-on or degenerate triangle has det = 0, so t is infinite or NaN and fails the range test:
+     * no separate branch for it, which the JIT would compile as a trap (degenerate triangles are
+     * rare, and the dragon's first one deoptimised the whole traversal mid-render).
+     */
     private static double distance(double u, double w1, double w2, double az, double bz, double cz, double sz,
                                    double tMax, ShadeRec sr) {
         double det = u + w1 + w2;
-        if (det == 0) {
-            return Double.POSITIVE_INFINITY; // edge-on or degenerate
-        }
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
-        if (!(t > 0 && t < tMax)) {
+        if (!(t > 0 & t < tMax)) {
             return Double.POSITIVE_INFINITY;
         }
         sr.b1 = w1 / det;

@@ -60,6 +60,11 @@ public final class Mesh {
         return triangles[3 * tri + k];
     }
 
+    /** The vertex indices of all triangles, three each (not a copy: read only). */
+    public int[] triangles() {
+        return triangles;
+    }
+
     public double[] positions() {
         return positions;
     }
