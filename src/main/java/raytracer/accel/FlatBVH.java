@@ -126,24 +126,41 @@ public final class FlatBVH {
      * (x0, y0, z0, x1, y1, z1) at {@code b[i..i+6)}, clamped to 0 when it starts inside, or
      * +infinity when it misses the box on (0, tMax). The ray comes as primitives, loaded once per
      * traversal: origin, 1/d, 1/d widened for the far planes (pbrt-v3, section 3.9.2) and the
-     * offset (0 or 3) of each axis's near plane. The comparisons are ordered so that a NaN (an
-     * origin on a slab plane gives 0 * infinity) imposes no constraint instead of rejecting the box.
+     * offset (0 or 3) of each axis's near plane.
+     *
+     * <p>With finite inverses no slab distance is NaN, and Math.max/min combine them without a
+     * branch (the ordered comparisons compile to branches that the CPU mispredicts: 10-20% slower
+     * in a same-JVM test of the traversal alone). A ray parallel to an axis has an infinite 1/d, and
+     * an origin on a slab plane of that axis gives 0 * infinity = NaN; for such rays
+     * ({@code parallel}) the comparisons are ordered so that a NaN imposes no constraint.
      */
     static double entry(int[] b, int i, double ox, double oy, double oz, double ix, double iy, double iz,
-                        double fx, double fy, double fz, int nx, int ny, int nz, double tMax) {
+                        double fx, double fy, double fz, int nx, int ny, int nz, double tMax, boolean parallel) {
         double tx0 = (Float.intBitsToFloat(b[i + nx]) - ox) * ix;
         double tx1 = (Float.intBitsToFloat(b[i + 3 - nx]) - ox) * fx;
         double ty0 = (Float.intBitsToFloat(b[i + 1 + ny]) - oy) * iy;
         double ty1 = (Float.intBitsToFloat(b[i + 4 - ny]) - oy) * fy;
         double tz0 = (Float.intBitsToFloat(b[i + 2 + nz]) - oz) * iz;
         double tz1 = (Float.intBitsToFloat(b[i + 5 - nz]) - oz) * fz;
-        double t0 = tx0 > 0 ? tx0 : 0;
-        double t1 = tx1 < tMax ? tx1 : tMax;
-        t0 = ty0 > t0 ? ty0 : t0;
-        t1 = ty1 < t1 ? ty1 : t1;
-        t0 = tz0 > t0 ? tz0 : t0;
-        t1 = tz1 < t1 ? tz1 : t1;
+        double t0;
+        double t1;
+        if (parallel) {
+            t0 = tx0 > 0 ? tx0 : 0;
+            t1 = tx1 < tMax ? tx1 : tMax;
+            t0 = ty0 > t0 ? ty0 : t0;
+            t1 = ty1 < t1 ? ty1 : t1;
+            t0 = tz0 > t0 ? tz0 : t0;
+            t1 = tz1 < t1 ? tz1 : t1;
+        } else {
+            t0 = Math.max(Math.max(tx0, ty0), Math.max(tz0, 0));
+            t1 = Math.min(Math.min(tx1, ty1), Math.min(tz1, tMax));
+        }
         return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+    }
+
+    /** True when a widened inverse direction is infinite (or NaN): the ray needs the NaN-safe slab test. */
+    private static boolean parallel(double fx, double fy, double fz) {
+        return !(Math.abs(fx) <= Double.MAX_VALUE && Math.abs(fy) <= Double.MAX_VALUE && Math.abs(fz) <= Double.MAX_VALUE);
     }
 
     /**
@@ -165,9 +182,10 @@ public final class FlatBVH {
         int nx = ray.nearX;
         int ny = ray.nearY;
         int nz = ray.nearZ;
+        boolean parallel = parallel(fx, fy, fz);
         double tHit = sr.t;
         sr.boxTests++;
-        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit) < tHit)) {
+        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit, parallel) < tHit)) {
             return false;
         }
         int[] nodes = records;
@@ -189,8 +207,8 @@ public final class FlatBVH {
             } else {
                 int r = RECORD * link;
                 tests += 2;
-                double tLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit);
-                double tRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit);
+                double tLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit, parallel);
+                double tRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tHit, parallel);
                 if (tLeft < Double.POSITIVE_INFINITY) {
                     if (tRight < Double.POSITIVE_INFINITY) {
                         int far = tLeft <= tRight ? 1 : 0;
@@ -239,8 +257,9 @@ public final class FlatBVH {
         int nx = ray.nearX;
         int ny = ray.nearY;
         int nz = ray.nearZ;
+        boolean parallel = parallel(fx, fy, fz);
         sr.boxTests++;
-        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax) < tMax)) {
+        if (!(entry(rootBox, 0, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax, parallel) < tMax)) {
             return false;
         }
         int[] nodes = records;
@@ -258,9 +277,9 @@ public final class FlatBVH {
             } else {
                 int r = RECORD * link;
                 tests += 2;
-                boolean hitLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax)
+                boolean hitLeft = entry(nodes, r + LEFT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax, parallel)
                                   < Double.POSITIVE_INFINITY;
-                boolean hitRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax)
+                boolean hitRight = entry(nodes, r + RIGHT_BOX, ox, oy, oz, ix, iy, iz, fx, fy, fz, nx, ny, nz, tMax, parallel)
                                    < Double.POSITIVE_INFINITY;
                 if (hitLeft) {
                     if (hitRight) {
