@@ -58,16 +58,21 @@ public final class Watertight {
     }
 
     /**
-     * The hit distance from the scaled barycentrics u, w1, w2 and the vertices' sheared z. An
-     * edge-on or degenerate triangle has det = 0, so t is infinite or NaN and fails the range test:
-     * no separate branch for it, which the JIT would compile as a trap (degenerate triangles are
-     * rare, and the dragon's first one deoptimised the whole traversal mid-render).
+     * The hit distance from the scaled barycentrics u, w1, w2 and the vertices' sheared z.
+     *
+     * <p>Every branch here goes both ways often, so that the JIT never compiles one as a trap that
+     * throws the whole inlined traversal away the first time it is taken (JFR showed exactly that a
+     * second into the first dragon render): an edge-on or degenerate triangle (det = 0) gets no
+     * branch of its own, its t is infinite or NaN and fails the range test; and 0 &lt; t &lt; tMax
+     * is one comparison, min(t, tMax - t) &gt; 0, since a beyond-tMax hit alone is rare (never, for
+     * a shadow ray towards a light outside the mesh). The two are the same test: with gradual
+     * underflow tMax - t &gt; 0 exactly when t &lt; tMax, and a NaN fails both.
      */
     private static double distance(double u, double w1, double w2, double az, double bz, double cz, double sz,
                                    double tMax, ShadeRec sr) {
         double det = u + w1 + w2;
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
-        if (!(t > 0 & t < tMax)) {
+        if (!(Math.min(t, tMax - t) > 0)) {
             return Double.POSITIVE_INFINITY;
         }
         sr.b1 = w1 / det;
