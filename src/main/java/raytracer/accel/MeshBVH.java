@@ -1,6 +1,5 @@
 package raytracer.accel;
 
-import java.util.Arrays;
 import java.util.List;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
@@ -23,12 +22,10 @@ public final class MeshBVH extends GeometricObject implements Leaves {
     private final double[] positions;
     private final FlatBVH bvh;
     /**
-     * The mesh's vertices renumbered in the order the BVH leaves first use them, and the three
-     * vertex numbers of each triangle in leaf order: a leaf's triangles are one contiguous run of
-     * indices into vertices that lie close together: the dragon's 871k triangles take 21 MB this
-     * way instead of 63 MB as nine coordinates each (see README, "BVH layout").
+     * The vertex offsets into {@link #positions} of each triangle's corners, in BVH leaf order: a
+     * leaf's triangles are one contiguous run of indices (12 bytes a triangle; nine copied
+     * coordinates took 72, and renumbering the vertices in leaf order as well measured no faster).
      */
-    private final double[] leafPositions;
     private final int[] leafCorners;
     private final Material[] materials;
     /** Per material id: a normal map (RGB = (n + 1) / 2) or null, and whether it is in tangent space. */
@@ -49,26 +46,12 @@ public final class MeshBVH extends GeometricObject implements Leaves {
         this.materials = materials.toArray(new Material[0]);
         this.normalMaps = new Texture[Math.max(1, this.materials.length)];
         this.tangentSpace = new boolean[normalMaps.length];
-        int[] renumbered = new int[mesh.vertexCount()];
-        Arrays.fill(renumbered, -1);
         int[] order = bvh.order;
         int[] corners = mesh.triangles();
         leafCorners = new int[3 * order.length];
-        double[] p = new double[positions.length];
-        int next = 0;
         for (int k = 0; k < 3 * order.length; k++) {
-            int v = corners[3 * order[k / 3] + k % 3];
-            int to = renumbered[v];
-            if (to < 0) {
-                to = 3 * next++;
-                renumbered[v] = to;
-                p[to] = positions[3 * v];
-                p[to + 1] = positions[3 * v + 1];
-                p[to + 2] = positions[3 * v + 2];
-            }
-            leafCorners[k] = to;
+            leafCorners[k] = 3 * corners[3 * order[k / 3] + k % 3];
         }
-        leafPositions = next == mesh.vertexCount() ? p : Arrays.copyOf(p, 3 * next);
     }
 
     /**
@@ -159,7 +142,7 @@ public final class MeshBVH extends GeometricObject implements Leaves {
     public boolean hit(int first, int count, Ray ray, ShadeRec sr) {
         boolean hit = false;
         for (int k = first; k < first + count; k++) {
-            double t = Watertight.intersect(ray, leafPositions, leafCorners[3 * k], leafCorners[3 * k + 1],
+            double t = Watertight.intersect(ray, positions, leafCorners[3 * k], leafCorners[3 * k + 1],
                                             leafCorners[3 * k + 2], sr.t, sr);
             if (t < sr.t) {
                 sr.recordHit(t, this);
@@ -173,7 +156,7 @@ public final class MeshBVH extends GeometricObject implements Leaves {
     @Override
     public boolean shadowHit(int first, int count, Ray ray, double tMax, ShadeRec sr) {
         for (int k = first; k < first + count; k++) {
-            if (Watertight.intersect(ray, leafPositions, leafCorners[3 * k], leafCorners[3 * k + 1],
+            if (Watertight.intersect(ray, positions, leafCorners[3 * k], leafCorners[3 * k + 1],
                                      leafCorners[3 * k + 2], tMax, sr) < tMax) {
                 return true;
             }
