@@ -65,6 +65,11 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
     Integer maxDepth;
 
+    @Option(names = "--cutoff", paramLabel = "C",
+            description = "Adaptive ray-tree cutoff (overrides the scene): branches weighing less than C and light "
+                          + "samples adding less than C are not traced; 0 traces the whole tree.")
+    Double cutoff;
+
     @Option(names = "--view", paramLabel = "VIEW",
             description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
     String view = "shaded";
@@ -137,6 +142,9 @@ public final class RenderCommand implements Callable<Integer> {
         applyOverrides(world);
         if (pass != null) {
             world.setPass(ShadingPass.parse(pass));
+        }
+        if (cutoff != null) {
+            world.setCutoff(cutoff);
         }
         long prepareStart = System.nanoTime();
         world.prepare(objects -> Aggregation.organize(objects, accelMode));
