@@ -96,6 +96,19 @@ public final class WorkerScratch {
         return Math.max(r, Math.max(g, b)) >= cutoff;
     }
 
+    /**
+     * How many of an area light's {@code samples} a hit at {@code depth} takes: all of them for
+     * camera rays, and in proportion to the path weight below (at least one) when the cutoff is on,
+     * since a hit weighing w adds w^2 of its estimate's variance to the pixel. Each count gives an
+     * unbiased estimate; only the noise of faint, deep hits grows.
+     */
+    public int lightSamples(int depth, int samples) {
+        if (cutoff == 0 || depth == 0) {
+            return samples;
+        }
+        return Math.max(1, Math.min(samples, (int) Math.ceil(samples * weight(depth))));
+    }
+
     /** The largest channel of the path weight of the ray traced at {@code depth}. */
     public double weight(int depth) {
         return Math.max(weightR[depth], Math.max(weightG[depth], weightB[depth]));

@@ -22,6 +22,7 @@ public final class World {
     private Light ambient;
     private ShadingPass pass = ShadingPass.FULL;
     private double cutoff;
+    private boolean linearDisplay;
     private final List<GeometricObject> objectList = new ArrayList<>();
     private final List<Light> lightList = new ArrayList<>();
 
@@ -138,8 +139,9 @@ public final class World {
 
     /**
      * The adaptive ray-tree cutoff (Hall and Greenberg 1983): branches whose path weight is below it
-     * in every channel are not traced, and light samples that would add less than it (in display
-     * units) are not shadow-tested. 0, the default, traces the whole tree to the max depth.
+     * in every channel are not traced, light samples that would add less than it (in display units)
+     * are not shadow-tested, and hits below the camera's take area-light samples in proportion to
+     * their weight. 0, the default, traces the whole tree to the max depth.
      */
     public void setCutoff(double cutoff) {
         if (!(cutoff >= 0 && cutoff < 1)) {
@@ -150,6 +152,18 @@ public final class World {
 
     public double cutoff() {
         return cutoff;
+    }
+
+    /**
+     * Whether PNG output skips the sRGB transfer curve and writes clamped radiance as code values,
+     * as the report's renderer did (its darker, more contrasted images); false by default.
+     */
+    public void setLinearDisplay(boolean linearDisplay) {
+        this.linearDisplay = linearDisplay;
+    }
+
+    public boolean linearDisplay() {
+        return linearDisplay;
     }
 
     public ViewPlane viewPlane() {

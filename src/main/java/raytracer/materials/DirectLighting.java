@@ -53,9 +53,12 @@ final class DirectLighting {
         for (Light light : sr.world.lights()) {
             int n = light.sampleCount();
             boolean sampled = light.hasExtent();
+            if (sampled && !light.mayIlluminate(sr)) {
+                continue; // every sample would weigh nothing: draw none
+            }
             if (sampled) {
                 // a fresh stratified pattern per light and point (Suffern, section 18.5)
-                n = sr.world.viewPlane().sampler().supportedCount(n);
+                n = sr.world.viewPlane().sampler().supportedCount(scratch.lightSamples(sr.depth, n));
                 sr.world.viewPlane().sampler().generate(n, scratch.rng, scratch.lightX, scratch.lightY);
             }
             for (int s = 0; s < n; s++) {

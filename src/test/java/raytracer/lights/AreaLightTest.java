@@ -3,6 +3,8 @@ package raytracer.lights;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.cameras.Orthographic;
@@ -14,6 +16,7 @@ import raytracer.materials.Matte;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
+import raytracer.math.Vec3;
 import raytracer.math.Vector3D;
 import raytracer.render.Renderer;
 import raytracer.samplers.MultiJittered;
@@ -90,5 +93,44 @@ class AreaLightTest {
         double[] facing = estimate(AreaLight.rectangle(new Point3D(-1, 2, -1), new Vector3D(2, 0, 0), new Vector3D(0, 0, 2),
                                                        5, RGBColor.WHITE, samples));
         assertTrue(facing[0] > 0.5, "facing down it lights the floor: " + facing[0]);
+    }
+
+    /**
+     * An emitter that says it cannot light a point must be right: no sample of it may then be both
+     * in front of its emitting side and above the point's tangent plane. Checked on random points
+     * and normals around each kind of emitter, with 400 samples each.
+     */
+    @Test
+    void emittersThatSayTheyCannotLightAPointNeverDo() {
+        Emitter[] emitters = {
+            new RectangleEmitter(new Point3D(-1, 2, -0.5), new Vector3D(2, 0, 0.3), new Vector3D(0.2, 0, 1)),
+            new DiskEmitter(new Point3D(0.5, 1, 0), new Vector3D(1, -2, 0.5), 0.7),
+            new SphereEmitter(new Point3D(0, 1.5, 0.5), 0.6)};
+        SplittableRandom random = new SplittableRandom(5);
+        Vec3 p = new Vec3();
+        Vec3 n = new Vec3();
+        Vec3 q = new Vec3();
+        Vec3 qn = new Vec3();
+        for (Emitter e : emitters) {
+            int refused = 0;
+            for (int i = 0; i < 20_000; i++) {
+                p.set(random.nextDouble(-4, 4), random.nextDouble(-4, 4), random.nextDouble(-4, 4));
+                n.set(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1)).normalize();
+                boolean may = e.mayLight(p, n);
+                boolean lit = false;
+                for (int s = 0; s < 400 && !lit; s++) {
+                    e.sample((s % 20 + 0.5) / 20, (s / 20 + 0.5) / 20, q, qn);
+                    double dx = q.x - p.x;
+                    double dy = q.y - p.y;
+                    double dz = q.z - p.z;
+                    lit = n.dot(dx, dy, dz) > 0 && -qn.dot(dx, dy, dz) > 0;
+                }
+                if (!may) {
+                    refused++;
+                    assertTrue(!lit, e.getClass().getSimpleName() + " refused a point it lights");
+                }
+            }
+            assertTrue(refused > 2000, e.getClass().getSimpleName() + " should refuse many points: " + refused);
+        }
     }
 }
