@@ -98,7 +98,8 @@ public final class WorkerScratch {
 
     /**
      * How many of an area light's {@code samples} a hit at {@code depth} takes: all of them for
-     * camera rays, and in proportion to the path weight below (at least one) when the cutoff is on,
+     * camera rays, and in proportion to the path weight below (rounded down, at least one) when the
+     * cutoff is on,
      * since a hit weighing w adds w^2 of its estimate's variance to the pixel. Each count gives an
      * unbiased estimate; only the noise of faint, deep hits grows.
      */
@@ -106,7 +107,7 @@ public final class WorkerScratch {
         if (cutoff == 0 || depth == 0) {
             return samples;
         }
-        return Math.max(1, Math.min(samples, (int) Math.ceil(samples * weight(depth))));
+        return Math.max(1, Math.min(samples, (int) (samples * weight(depth))));
     }
 
     /** The largest channel of the path weight of the ray traced at {@code depth}. */
