@@ -65,6 +65,15 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
     Integer maxDepth;
 
+    @Option(names = "--cutoff", paramLabel = "C",
+            description = "Adaptive ray-tree cutoff (overrides the scene): branches weighing less than C and light "
+                          + "samples adding less than C are not traced; 0 traces the whole tree.")
+    Double cutoff;
+
+    @Option(names = "--encoding", paramLabel = "E",
+            description = "PNG encoding (overrides the scene): srgb, or linear (clamped radiance as the code value, as the report did).")
+    String encoding;
+
     @Option(names = "--view", paramLabel = "VIEW",
             description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
     String view = "shaded";
@@ -138,6 +147,16 @@ public final class RenderCommand implements Callable<Integer> {
         if (pass != null) {
             world.setPass(ShadingPass.parse(pass));
         }
+        if (cutoff != null) {
+            world.setCutoff(cutoff);
+        }
+        if (encoding != null) {
+            switch (encoding) {
+                case "srgb" -> world.setLinearDisplay(false);
+                case "linear" -> world.setLinearDisplay(true);
+                default -> throw new IllegalArgumentException("unknown --encoding '" + encoding + "'; allowed: linear, srgb");
+            }
+        }
         long prepareStart = System.nanoTime();
         world.prepare(objects -> Aggregation.organize(objects, accelMode));
         long prepareNanos = System.nanoTime() - prepareStart;
@@ -170,7 +189,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.printf("bvh-cost: %.0f to %.0f bounding-volume tests per pixel (black to white)%n",
                        range[0] / vp.numSamples(), range[1] / vp.numSamples());
         }
-        ImageWriters.write(film, costView ? 1 : vp.exposure(), out);
+        ImageWriters.write(film, costView ? 1 : vp.exposure(), costView || !world.linearDisplay(), out);
         if (!quiet) {
             err.println(summary(stats, out));
         }

@@ -17,6 +17,14 @@ public abstract class Light {
     /** Writes the incident radiance (or, for point lights, the irradiance factor I / r^2) into {@code out}. */
     public abstract void L(ShadeRec sr, Rgb out);
 
+    /**
+     * False when the light cannot reach the hit at all (behind it, or below its tangent plane), so
+     * that shading skips it without drawing samples; lights without extent say true.
+     */
+    public boolean mayIlluminate(ShadeRec sr) {
+        return true;
+    }
+
     /** True for lights with a surface to sample (area lights); false for points and directions. */
     public boolean hasExtent() {
         return false;

@@ -3,7 +3,9 @@ package raytracer.core;
 import java.util.Locale;
 
 /**
- * The report's term passes (figures 4 and 6): which terms the first hit contributes. Deeper hits
+ * The report's term passes (figures 4 and 6): which terms the first hit contributes. The magenta
+ * pass is the full image except that the first hit's reflected rays see pure magenta, as in the
+ * report's figures 4c and 6c (the highlight and the refraction stay). Deeper hits
  * are always shaded in full, so "reflection only" shows everything the mirror reflects. The
  * ablation {@link #NO_FRESNEL} ignores the angle dependence at every depth: mirrors reflect their
  * normal-incidence fraction, glass refracts everything and reflects nothing.
@@ -12,7 +14,7 @@ public enum ShadingPass {
     FULL, DIRECT, REFLECTION, REFRACTION, MAGENTA_REFLECTION, NO_FRESNEL;
 
     public boolean direct(int depth) {
-        return depth > 0 || this == FULL || this == DIRECT || this == NO_FRESNEL;
+        return depth > 0 || this == FULL || this == DIRECT || this == MAGENTA_REFLECTION || this == NO_FRESNEL;
     }
 
     public boolean reflection(int depth) {
@@ -20,7 +22,7 @@ public enum ShadingPass {
     }
 
     public boolean refraction(int depth) {
-        return depth > 0 || this == FULL || this == REFRACTION || this == NO_FRESNEL;
+        return depth > 0 || this == FULL || this == REFRACTION || this == MAGENTA_REFLECTION || this == NO_FRESNEL;
     }
 
     /** Reflected rays of the first hit see a pure magenta environment, to show the reflected fraction. */

@@ -59,6 +59,69 @@ public final class WorkerScratch {
         environments = new Background[levels];
         patternX = new double[levels][];
         patternY = new double[levels][];
+        weightR = new double[levels];
+        weightG = new double[levels];
+        weightB = new double[levels];
+        weightR[0] = weightG[0] = weightB[0] = 1; // a camera ray carries all of its sample's weight
+        cutoff = world.cutoff();
+        radianceCutoff = world.cutoff() / world.viewPlane().exposure();
+    }
+
+    // ---- adaptive ray-tree depth (Hall and Greenberg 1983) ----
+    /**
+     * Path weight, per channel, of the ray traced at each depth: the product of the factors
+     * (Fresnel fractions, mirror colours, Beer transmittances, glossy weights) that its radiance
+     * will be multiplied by on its way back to the pixel. Depth 0 stays 1; materials set the deeper
+     * slots through {@link #branch} just before they trace.
+     */
+    private final double[] weightR;
+    private final double[] weightG;
+    private final double[] weightB;
+    private final double cutoff;
+    private final double radianceCutoff;
+
+    /**
+     * Sets the weight of a branch traced from {@code depth} as the parent's weight times the
+     * factor (fr, fg, fb) and says whether it is worth tracing: false when every channel of the
+     * weight is below the world's cutoff, so whatever radiance L the branch would bring back
+     * changes the pixel by less than cutoff * L.
+     */
+    public boolean branch(int depth, double fr, double fg, double fb) {
+        double r = weightR[depth] * fr;
+        double g = weightG[depth] * fg;
+        double b = weightB[depth] * fb;
+        weightR[depth + 1] = r;
+        weightG[depth + 1] = g;
+        weightB[depth + 1] = b;
+        return Math.max(r, Math.max(g, b)) >= cutoff;
+    }
+
+    /**
+     * How many of an area light's {@code samples} a hit at {@code depth} takes: all of them for
+     * camera rays, and in proportion to the path weight below (rounded down, at least one) when the
+     * cutoff is on,
+     * since a hit weighing w adds w^2 of its estimate's variance to the pixel. Each count gives an
+     * unbiased estimate; only the noise of faint, deep hits grows.
+     */
+    public int lightSamples(int depth, int samples) {
+        if (cutoff == 0 || depth == 0) {
+            return samples;
+        }
+        return Math.max(1, Math.min(samples, (int) (samples * weight(depth))));
+    }
+
+    /** The largest channel of the path weight of the ray traced at {@code depth}. */
+    public double weight(int depth) {
+        return Math.max(weightR[depth], Math.max(weightG[depth], weightB[depth]));
+    }
+
+    /**
+     * True when radiance {@code (r, g, b)} leaving a hit at {@code depth} would change the pixel by
+     * less than the cutoff (in display units: 1 is white at the image's exposure); the shading
+     * then need not trace the shadow ray that could only confirm it.
+     */
+    public boolean negligible(int depth, double r, double g, double b) {
+        return Math.max(r * weightR[depth], Math.max(g * weightG[depth], b * weightB[depth])) < radianceCutoff;
     }
 
     /** Bounding-volume tests made by all rays of this worker so far. */

@@ -21,6 +21,8 @@ public final class World {
     private Background background = (ray, out) -> out.setBlack();
     private Light ambient;
     private ShadingPass pass = ShadingPass.FULL;
+    private double cutoff;
+    private boolean linearDisplay;
     private final List<GeometricObject> objectList = new ArrayList<>();
     private final List<Light> lightList = new ArrayList<>();
 
@@ -133,6 +135,35 @@ public final class World {
     /** Which terms the first hit shows (report figures 4 and 6); FULL normally. */
     public ShadingPass pass() {
         return pass;
+    }
+
+    /**
+     * The adaptive ray-tree cutoff (Hall and Greenberg 1983): branches whose path weight is below it
+     * in every channel are not traced, light samples that would add less than it (in display units)
+     * are not shadow-tested, and hits below the camera's take area-light samples in proportion to
+     * their weight. 0, the default, traces the whole tree to the max depth.
+     */
+    public void setCutoff(double cutoff) {
+        if (!(cutoff >= 0 && cutoff < 1)) {
+            throw new IllegalArgumentException("cutoff must be in [0, 1), got " + cutoff);
+        }
+        this.cutoff = cutoff;
+    }
+
+    public double cutoff() {
+        return cutoff;
+    }
+
+    /**
+     * Whether PNG output skips the sRGB transfer curve and writes clamped radiance as code values,
+     * as the report's renderer did (its darker, more contrasted images); false by default.
+     */
+    public void setLinearDisplay(boolean linearDisplay) {
+        this.linearDisplay = linearDisplay;
+    }
+
+    public boolean linearDisplay() {
+        return linearDisplay;
     }
 
     public ViewPlane viewPlane() {

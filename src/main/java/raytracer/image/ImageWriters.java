@@ -28,9 +28,17 @@ public final class ImageWriters {
 
     /** Writes the film atomically: a failure never leaves a broken file in place of a good one. */
     public static void write(Film film, double exposure, Path path) throws IOException {
+        write(film, exposure, true, path);
+    }
+
+    /**
+     * As {@link #write(Film, double, Path)}; without {@code srgb} a PNG holds the clamped radiance as
+     * its code values, as the report's images do (PFM output is linear either way).
+     */
+    public static void write(Film film, double exposure, boolean srgb, Path path) throws IOException {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.endsWith(".png")) {
-            BufferedImage image = toImage(film, exposure);
+            BufferedImage image = toImage(film, exposure, srgb);
             AtomicFile.write(path, out -> {
                 if (!ImageIO.write(image, "png", out)) {
                     throw new IOException("no PNG encoder available");
@@ -44,12 +52,16 @@ public final class ImageWriters {
     }
 
     public static BufferedImage toImage(Film film, double exposure) {
+        return toImage(film, exposure, true);
+    }
+
+    public static BufferedImage toImage(Film film, double exposure, boolean srgb) {
         BufferedImage image = new BufferedImage(film.width(), film.height(), BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < film.height(); y++) {
             for (int x = 0; x < film.width(); x++) {
-                int r = ToneMap.toByte(film.get(x, y, 0), exposure);
-                int g = ToneMap.toByte(film.get(x, y, 1), exposure);
-                int b = ToneMap.toByte(film.get(x, y, 2), exposure);
+                int r = ToneMap.toByte(film.get(x, y, 0), exposure, srgb);
+                int g = ToneMap.toByte(film.get(x, y, 1), exposure, srgb);
+                int b = ToneMap.toByte(film.get(x, y, 2), exposure, srgb);
                 image.setRGB(x, y, r << 16 | g << 8 | b);
             }
         }

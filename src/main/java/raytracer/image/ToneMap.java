@@ -2,7 +2,9 @@ package raytracer.image;
 
 /**
  * Linear radiance to display values: multiply by the exposure, clamp to [0, 1], then apply the sRGB
- * transfer function (IEC 61966-2-1) and round to 8 bits.
+ * transfer function (IEC 61966-2-1) and round to 8 bits. The report's renderer wrote the clamped
+ * radiance as the code value without that curve; {@link #toByte(double, double, boolean)} can do the
+ * same, to compare with its images.
  */
 public final class ToneMap {
     private ToneMap() {
@@ -20,6 +22,11 @@ public final class ToneMap {
 
     /** An 8-bit sRGB code value for a linear radiance, after exposure and clamping. */
     public static int toByte(double linear, double exposure) {
+        return toByte(linear, exposure, true);
+    }
+
+    /** As {@link #toByte(double, double)}; without {@code srgb} the clamped value is the code (gamma 1). */
+    public static int toByte(double linear, double exposure, boolean srgb) {
         double v = linear * exposure;
         if (!(v > 0)) {
             return 0; // also maps NaN to black rather than to an arbitrary code
@@ -27,6 +34,6 @@ public final class ToneMap {
         if (v >= 1) {
             return 255;
         }
-        return (int) Math.round(255 * srgbEncode(v));
+        return (int) Math.round(255 * (srgb ? srgbEncode(v) : v));
     }
 }

@@ -46,6 +46,11 @@ public final class AreaLight extends Light {
     }
 
     @Override
+    public boolean mayIlluminate(ShadeRec sr) {
+        return emitter.mayLight(sr.hitPoint, sr.normal) && emitter.mayLight(sr.hitPoint, sr.geometricNormal);
+    }
+
+    @Override
     public int sampleCount() {
         return samples;
     }

@@ -37,6 +37,20 @@ final class DiskEmitter implements Emitter {
     }
 
     @Override
+    public boolean mayLight(Vec3 p, Vec3 n) {
+        double cx = center.x() - p.x;
+        double cy = center.y() - p.y;
+        double cz = center.z() - p.z;
+        if (normal.x() * cx + normal.y() * cy + normal.z() * cz >= 0) {
+            return false;
+        }
+        // highest point of the disk over the tangent plane: the centre's height plus the radius
+        // times the length of n's component in the disk's plane
+        double nn = n.x * normal.x() + n.y * normal.y() + n.z * normal.z();
+        return n.x * cx + n.y * cy + n.z * cz + radius * Math.sqrt(Math.max(0, 1 - nn * nn)) > 0;
+    }
+
+    @Override
     public double area() {
         return Math.PI * radius * radius;
     }

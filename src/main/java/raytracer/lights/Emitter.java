@@ -9,4 +9,11 @@ interface Emitter {
     void sample(double u, double v, Vec3 point, Vec3 normal);
 
     double area();
+
+    /**
+     * False only when no point of the emitter can light point {@code p} of a surface with unit
+     * normal {@code n}: p is behind the emitting side, or the whole emitter lies below p's tangent
+     * plane. Conservative: true may still mean that every sample weighs nothing.
+     */
+    boolean mayLight(Vec3 p, Vec3 n);
 }

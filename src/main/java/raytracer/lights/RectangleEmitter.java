@@ -31,6 +31,21 @@ final class RectangleEmitter implements Emitter {
     }
 
     @Override
+    public boolean mayLight(Vec3 p, Vec3 n) {
+        double cx = corner.x() - p.x;
+        double cy = corner.y() - p.y;
+        double cz = corner.z() - p.z;
+        if (normal.x() * cx + normal.y() * cy + normal.z() * cz >= 0) {
+            return false; // p is not in front of the emitting side
+        }
+        // the corner with the largest height over the tangent plane (n . (q - p) is linear in u, v)
+        double h = n.x * cx + n.y * cy + n.z * cz;
+        double ha = n.x * a.x() + n.y * a.y() + n.z * a.z();
+        double hb = n.x * b.x() + n.y * b.y() + n.z * b.z();
+        return h + Math.max(ha, 0) + Math.max(hb, 0) > 0;
+    }
+
+    @Override
     public double area() {
         return area;
     }

@@ -30,6 +30,11 @@ final class SphereEmitter implements Emitter {
     }
 
     @Override
+    public boolean mayLight(Vec3 p, Vec3 n) {
+        return n.x * (center.x() - p.x) + n.y * (center.y() - p.y) + n.z * (center.z() - p.z) + radius > 0;
+    }
+
+    @Override
     public double area() {
         return 4 * Math.PI * radius * radius;
     }

@@ -46,11 +46,24 @@ public final class Dielectric extends Material {
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
-        DirectLighting.shade(sr, ambient, diffuse, specular, out);
+        WorkerScratch scratch = sr.scratch;
+        // Beer's law: a hit seen from inside ends a segment of length t through the medium
+        boolean inside = !sr.frontFace;
+        double tr = inside ? Math.exp(-absorption.r() * sr.t) : 1;
+        double tg = inside ? Math.exp(-absorption.g() * sr.t) : 1;
+        double tb = inside ? Math.exp(-absorption.b() * sr.t) : 1;
+        if (inside && sr.object.castsShadows()) {
+            // Seen from inside, a light outside the body is reached only through the body's own
+            // surface, which casts shadows: every shadow ray would be blocked, so none is traced.
+            // (Glass has no diffuse or ambient term, so nothing else is lost.)
+            sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+            out.setBlack();
+        } else {
+            DirectLighting.shade(sr, ambient, diffuse, specular, out);
+        }
         int next = sr.depth + 1;
         ShadingPass pass = sr.world.pass();
         if (next <= sr.world.viewPlane().maxDepth()) {
-            WorkerScratch scratch = sr.scratch;
             double cosI = sr.normal.dot(sr.wo);
             double eta = transmitter.relativeEta(sr);
             Vec3 wi = sr.wi;
@@ -58,23 +71,24 @@ public final class Dielectric extends Material {
             // the ablation without angle dependence: all refracted, nothing reflected (but for TIR)
             double r = !refracts ? 1 : pass.angleDependent() ? Fresnel.dielectric(cosI, 1, 1 / eta) : 0;
             Rgb incoming = scratch.color(next);
-            // the refracted part, 1 - R (wi holds its direction)
-            if (r < 1 && pass.refraction(sr.depth)) {
+            // the refracted part, 1 - R (wi holds its direction); the branch's weight includes the
+            // transmittance of the segment that ended here
+            double t = 1 - r;
+            if (r < 1 && pass.refraction(sr.depth) && scratch.branch(sr.depth, t * tr, t * tg, t * tb)) {
                 trace(sr, wi, next, scratch, incoming, null);
-                out.addProduct(incoming, RGBColor.WHITE, 1 - r);
+                out.addProduct(incoming, RGBColor.WHITE, t);
             }
             // the mirror part, R (all of it under total internal reflection)
-            if (r > 0 && pass.reflection(sr.depth)) {
+            if (r > 0 && pass.reflection(sr.depth) && scratch.branch(sr.depth, r * tr, r * tg, r * tb)) {
                 mirror.sampleDirection(sr, sr.wo, wi);
                 trace(sr, wi, next, scratch, incoming, pass.magentaReflection(sr.depth) ? Reflective.MAGENTA : reflectionMap);
                 out.addProduct(incoming, RGBColor.WHITE, r);
             }
         }
-        if (!sr.frontFace) {
-            double t = sr.t;
-            out.r *= Math.exp(-absorption.r() * t);
-            out.g *= Math.exp(-absorption.g() * t);
-            out.b *= Math.exp(-absorption.b() * t);
+        if (inside) {
+            out.r *= tr;
+            out.g *= tg;
+            out.b *= tb;
         }
     }
 

@@ -53,9 +53,12 @@ final class DirectLighting {
         for (Light light : sr.world.lights()) {
             int n = light.sampleCount();
             boolean sampled = light.hasExtent();
+            if (sampled && !light.mayIlluminate(sr)) {
+                continue; // every sample would weigh nothing: draw none
+            }
             if (sampled) {
                 // a fresh stratified pattern per light and point (Suffern, section 18.5)
-                n = sr.world.viewPlane().sampler().supportedCount(n);
+                n = sr.world.viewPlane().sampler().supportedCount(scratch.lightSamples(sr.depth, n));
                 sr.world.viewPlane().sampler().generate(n, scratch.rng, scratch.lightX, scratch.lightY);
             }
             for (int s = 0; s < n; s++) {
@@ -67,7 +70,11 @@ final class DirectLighting {
         }
     }
 
-    /** Adds one light sample in direction sr.wi, weighted by {@code weight} (1 / samples). */
+    /**
+     * Adds one light sample in direction sr.wi, weighted by {@code weight} (1 / samples). The
+     * unshadowed contribution is computed first: when it could not change the pixel by the world's
+     * cutoff (Hall and Greenberg 1983), the shadow ray is not traced and the sample is left out.
+     */
     private static void addSample(ShadeRec sr, Light light, double distance, BRDF diffuse, BRDF specular,
                                   boolean seedCompatible, double weight, Rgb out) {
         WorkerScratch scratch = sr.scratch;
@@ -77,8 +84,34 @@ final class DirectLighting {
         if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
             return;
         }
-        double g = light.geometryOverPdf(sr) * weight;
+        double g = light.geometryOverPdf(sr);
         if (!(g > 0)) {
+            return;
+        }
+        Rgb f = scratch.brdfScratch;
+        Rgb incident = scratch.lightScratch;
+        diffuse.f(sr, sr.wo, wi, f);
+        light.L(sr, incident);
+        if (seedCompatible) {
+            // the report's quirks: diffuse without 1/pi, specular without cos(theta_i)
+            f.scale(Math.PI * nDotWi);
+            if (specular != null) {
+                Rgb fs = scratch.specularScratch;
+                specular.f(sr, sr.wo, wi, fs);
+                f.add(fs);
+            }
+        } else {
+            if (specular != null) {
+                Rgb fs = scratch.specularScratch;
+                specular.f(sr, sr.wo, wi, fs);
+                f.add(fs);
+            }
+            f.scale(nDotWi);
+        }
+        // f L g, with f now holding the factor that reaches the viewer, is this sample's estimate of
+        // the light's whole contribution; one left out below the cutoff loses less than
+        // cutoff / samples, so a hit loses less than the cutoff per light
+        if (scratch.negligible(sr.depth, f.r * incident.r * g, f.g * incident.g * g, f.b * incident.b * g)) {
             return;
         }
         if (light.castsShadows()) {
@@ -87,23 +120,6 @@ final class DirectLighting {
                 return;
             }
         }
-        Rgb f = scratch.brdfScratch;
-        Rgb incident = scratch.lightScratch;
-        diffuse.f(sr, sr.wo, wi, f);
-        light.L(sr, incident);
-        if (seedCompatible) {
-            out.addProduct(f, incident, Math.PI * nDotWi * g);
-            if (specular != null) {
-                specular.f(sr, sr.wo, wi, f);
-                out.addProduct(f, incident, g);
-            }
-            return;
-        }
-        if (specular != null) {
-            Rgb fs = scratch.specularScratch;
-            specular.f(sr, sr.wo, wi, fs);
-            f.add(fs);
-        }
-        out.addProduct(f, incident, nDotWi * g);
+        out.addProduct(f, incident, g * weight);
     }
 }

@@ -63,6 +63,7 @@ public final class GlossyReflector extends Material {
         double[] ys = scratch.patternY(sr.depth);
         sampler.generate(n, scratch.rng, xs, ys);
         Vec3 wi = sr.wi;
+        RGBColor cs = specular.color();
         Rgb incoming = scratch.color(next);
         double r = 0;
         double g = 0;
@@ -72,6 +73,9 @@ public final class GlossyReflector extends Material {
             if (weight <= 0) {
                 continue; // below the surface: zero, but it counts in the average
             }
+            if (!scratch.branch(sr.depth, weight * cs.r() / n, weight * cs.g() / n, weight * cs.b() / n)) {
+                continue;
+            }
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
             scratch.secondaryRays++;
             scratch.setEnvironment(next, reflectionMap);
@@ -80,7 +84,6 @@ public final class GlossyReflector extends Material {
             g += incoming.g * weight;
             b += incoming.b * weight;
         }
-        RGBColor cs = specular.color();
         out.r += r * cs.r() / n;
         out.g += g * cs.g() / n;
         out.b += b * cs.b() / n;

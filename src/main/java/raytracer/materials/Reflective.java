@@ -64,12 +64,15 @@ public final class Reflective extends Material {
         }
         WorkerScratch scratch = sr.scratch;
         mirror.sampleDirection(sr, sr.wo, sr.wi);
+        double fraction = schlick && pass.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
+        if (!scratch.branch(sr.depth, reflectance.r() * fraction, reflectance.g() * fraction, reflectance.b() * fraction)) {
+            return;
+        }
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
         scratch.secondaryRays++;
         scratch.setEnvironment(next, pass.magentaReflection(sr.depth) ? MAGENTA : reflectionMap);
         Rgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
-        double fraction = schlick && pass.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
         out.addProduct(incoming, reflectance, fraction);
     }
 

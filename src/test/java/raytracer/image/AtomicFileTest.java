@@ -62,6 +62,11 @@ class AtomicFileTest {
         assertEquals(188, ToneMap.toByte(0.5, 1));
         assertEquals(118, ToneMap.toByte(0.18, 1));
         assertEquals(118, ToneMap.toByte(0.09, 2), "exposure multiplies before encoding");
+        // the report's encoding: the clamped radiance is the code value
+        assertEquals(128, ToneMap.toByte(0.5, 1, false));
+        assertEquals(46, ToneMap.toByte(0.18, 1, false));
+        assertEquals(255, ToneMap.toByte(3, 1, false));
+        assertEquals(0, ToneMap.toByte(Double.NaN, 1, false));
         // the linear segment near black: 0.002 * 12.92 * 255 = 6.6
         assertEquals(7, ToneMap.toByte(0.002, 1));
     }

@@ -99,4 +99,35 @@ class ShadingPassTest {
         // all refracted, nothing reflected: straight through the centre to the background
         assertEquals(0.9, glass.get(c, c, 2), 1e-6);
     }
+
+    @Test
+    void magentaKeepsTheOtherTermsAndReplacesOnlyWhatIsReflected() {
+        // a brown mirror with a highlight: magenta = direct + Schlick's fraction of (1, 0, 1)
+        Material brown = new Reflective(0.2, 0.3, new RGBColor(0.5, 0.3, 0.1), 0.2, RGBColor.WHITE, 50, 0.5, RGBColor.WHITE, true);
+        Film magenta = render(brown, ShadingPass.MAGENTA_REFLECTION);
+        Film direct = render(brown, ShadingPass.DIRECT);
+        // glass: magenta = direct + refraction + R (1, 0, 1)
+        Material glass = new Dielectric(1.5, RGBColor.gray(0.2), 0.5, 100);
+        Film glassMagenta = render(glass, ShadingPass.MAGENTA_REFLECTION);
+        Film glassDirect = render(glass, ShadingPass.DIRECT);
+        Film glassRefraction = render(glass, ShadingPass.REFRACTION);
+        for (int y = 0; y < SIZE; y++) {
+            for (int x = 0; x < SIZE; x++) {
+                if (isBackground(x, y)) {
+                    continue;
+                }
+                double px = ((x + 0.5) / SIZE * 2 - 1) * 1.2;
+                double py = (1 - (y + 0.5) / SIZE * 2) * 1.2;
+                double cos = Math.sqrt(1 - px * px - py * py);
+                double schlick = raytracer.math.Fresnel.schlick(0.5, cos);
+                double fresnel = raytracer.math.Fresnel.dielectric(cos, 1, 1.5);
+                double[] m = {1, 0, 1};
+                for (int ch = 0; ch < 3; ch++) {
+                    assertEquals(direct.get(x, y, ch) + schlick * m[ch], magenta.get(x, y, ch), 1e-6, "mirror " + x + "," + y);
+                    assertEquals(glassDirect.get(x, y, ch) + glassRefraction.get(x, y, ch) + fresnel * m[ch],
+                                 glassMagenta.get(x, y, ch), 1e-6, "glass " + x + "," + y);
+                }
+            }
+        }
+    }
 }

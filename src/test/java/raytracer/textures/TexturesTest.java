@@ -51,6 +51,13 @@ class TexturesTest {
         assertEquals(3, look(map, 0, -1, 0).g, 1e-12);
         // direction length does not matter, intensity scales
         assertEquals(2 * 5.5, look(new EnvironmentMap(ramp(), 2), 7, 0, 0).r, 1e-12);
+        // turned 90 degrees about +y, the image centre is seen down -x and +x sees the seam
+        EnvironmentMap turned = new EnvironmentMap(ramp(), 1, 90);
+        assertEquals(3.5, look(turned, -1, 0, 0).r, 1e-12);
+        assertEquals(1.5, look(turned, -1, 0, 0).g, 1e-12);
+        assertEquals(3.5, look(turned, 1, 0, 0).r, 1e-12);
+        assertEquals(5.5, look(turned, 0, 0, -1).r, 1e-12);
+        assertEquals(look(map, 0.3, 0.2, -0.9).r, look(new EnvironmentMap(ramp(), 1, 360), 0.3, 0.2, -0.9).r, 1e-12);
     }
 
     @Test

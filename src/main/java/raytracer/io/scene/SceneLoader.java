@@ -35,7 +35,7 @@ import raytracer.tracers.Whitted;
 public final class SceneLoader {
     private static final Set<String> SECTIONS =
         Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
-    private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure");
+    private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding");
 
     private SceneLoader() {
     }
@@ -83,6 +83,8 @@ public final class SceneLoader {
         ViewPlane vp = readImage(source, scene);
         Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
         World world = new World(vp, camera, readAmbient(source, scene));
+        world.setCutoff(readCutoff(source, scene));
+        world.setLinearDisplay(readLinearDisplay(source, scene));
         TextureReader textures = new TextureReader(source);
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
@@ -129,6 +131,31 @@ public final class SceneLoader {
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
                              image.integer("samples", 4, 1), Samplers.byName(samplerName),
                              image.integer("max-depth", 5, 0), image.number("exposure", 1, 0, true));
+    }
+
+    private static double readCutoff(Source source, YamlObject scene) throws SceneException {
+        if (!scene.has("image")) {
+            return 0;
+        }
+        YamlObject image = new YamlObject(source, scene.raw("image"), "image", IMAGE_KEYS);
+        double cutoff = image.number("cutoff", 0, 0, false);
+        if (cutoff >= 1) {
+            throw source.error(image.raw("cutoff"), "'cutoff' in image must be below 1, got " + cutoff);
+        }
+        return cutoff;
+    }
+
+    private static boolean readLinearDisplay(Source source, YamlObject scene) throws SceneException {
+        if (!scene.has("image")) {
+            return false;
+        }
+        YamlObject image = new YamlObject(source, scene.raw("image"), "image", IMAGE_KEYS);
+        String encoding = image.string("encoding", "srgb");
+        return switch (encoding) {
+            case "srgb" -> false;
+            case "linear" -> true;
+            default -> throw source.error(image.raw("encoding"), "unknown encoding '" + encoding + "'; allowed: linear, srgb");
+        };
     }
 
     private static Light readAmbient(Source source, YamlObject scene) throws SceneException {

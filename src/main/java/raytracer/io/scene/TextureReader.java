@@ -44,8 +44,8 @@ final class TextureReader {
     }
 
     EnvironmentMap environment(Node node, String what) throws SceneException {
-        YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity"));
-        return new EnvironmentMap(image(e), e.number("intensity", 1, 0, false));
+        YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity", "rotate-y"));
+        return new EnvironmentMap(image(e), e.number("intensity", 1, 0, false), e.number("rotate-y", 0));
     }
 
     /** Reads (or reuses) an image for a file path given relative to the scene, naming the path on failure. */
