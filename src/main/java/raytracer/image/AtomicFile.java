@@ -3,13 +3,19 @@ package raytracer.image;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFileAttributeView;
+import java.util.concurrent.ThreadLocalRandom;
 
 /**
  * Writes a file through a temporary sibling and a rename, so readers see either the old file or the
- * complete new one, never a half-written one.
+ * complete new one, never a half-written one. The result has the permissions a plainly created file
+ * would have (the umask's), or the replaced file's: {@code Files.createTempFile} would make it
+ * owner-only.
  */
 public final class AtomicFile {
 
@@ -25,18 +31,38 @@ public final class AtomicFile {
     public static void write(Path target, Body body) throws IOException {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
-        Path temp = Files.createTempFile(dir, "." + absolute.getFileName(), ".partial");
+        Path temp = null;
         try {
-            try (OutputStream out = Files.newOutputStream(temp)) {
+            OutputStream stream = null;
+            while (stream == null) {
+                temp = dir.resolve("." + absolute.getFileName() + "."
+                        + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + ".partial");
+                try {
+                    stream = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                } catch (FileAlreadyExistsException taken) {
+                    temp = null;
+                }
+            }
+            try (OutputStream out = stream) {
                 body.writeTo(out);
             }
+            keepPermissionsOf(absolute, temp);
             try {
                 Files.move(temp, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(temp, absolute, StandardCopyOption.REPLACE_EXISTING);
             }
         } finally {
-            Files.deleteIfExists(temp);
+            if (temp != null) {
+                Files.deleteIfExists(temp);
+            }
+        }
+    }
+
+    private static void keepPermissionsOf(Path replaced, Path temp) throws IOException {
+        PosixFileAttributeView view = Files.getFileAttributeView(temp, PosixFileAttributeView.class);
+        if (view != null && Files.exists(replaced)) {
+            view.setPermissions(Files.getPosixFilePermissions(replaced));
         }
     }
 }

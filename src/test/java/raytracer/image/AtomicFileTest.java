@@ -4,10 +4,14 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -35,6 +39,22 @@ class AtomicFileTest {
         Files.write(target, new byte[] {9, 9});
         AtomicFile.write(target, out -> out.write(new byte[] {1, 2, 3}));
         assertArrayEquals(new byte[] {1, 2, 3}, Files.readAllBytes(target));
+    }
+
+    @Test
+    void aNewFileGetsThePermissionsOfAPlainlyCreatedOneAndAReplacedFileKeepsItsOwn() throws IOException {
+        assumeTrue(dir.getFileSystem().supportedFileAttributeViews().contains("posix"), "POSIX file system");
+        Path plain = Files.createFile(dir.resolve("plain"));
+        Path target = dir.resolve("new.png");
+        AtomicFile.write(target, out -> out.write(1));
+        assertEquals(Files.getPosixFilePermissions(plain), Files.getPosixFilePermissions(target));
+
+        Path restricted = dir.resolve("restricted.png");
+        Files.write(restricted, new byte[] {9});
+        Set<PosixFilePermission> groupReadable = PosixFilePermissions.fromString("rw-r-----");
+        Files.setPosixFilePermissions(restricted, groupReadable);
+        AtomicFile.write(restricted, out -> out.write(2));
+        assertEquals(groupReadable, Files.getPosixFilePermissions(restricted));
     }
 
     @Test
