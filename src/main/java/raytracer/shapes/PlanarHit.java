@@ -4,7 +4,7 @@ import raytracer.core.ShadeRec;
 import raytracer.math.Ray;
 import raytracer.math.Rounding;
 
-/** Ray/plane arithmetic shared by the flat shapes (Rectangle, Disk): distance and projected hit point. */
+/** Ray/plane arithmetic shared by the flat shapes (Plane, Rectangle, Disk): distance and projected hit point. */
 final class PlanarHit {
     private PlanarHit() {
     }

@@ -6,7 +6,6 @@ import raytracer.math.BBox;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
-import raytracer.math.Rounding;
 import raytracer.math.Vector3D;
 
 /** An infinite plane through a point with a normal (Suffern, section 3.7). */
@@ -39,44 +38,25 @@ public final class Plane extends GeometricObject {
     }
 
     private double distance(Ray ray) {
-        double denominator = ray.dx * nx + ray.dy * ny + ray.dz * nz;
-        if (denominator == 0) {
-            return Double.POSITIVE_INFINITY; // parallel to the plane
-        }
-        return ((ax - ray.ox) * nx + (ay - ray.oy) * ny + (az - ray.oz) * nz) / denominator;
+        return PlanarHit.distance(ray, ax, ay, az, nx, ny, nz);
     }
 
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
-        double t = distance(ray);
-        return t > 0 && recordIfCloser(t, sr);
+        return recordIfCloser(distance(ray), sr);
     }
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        double t = distance(ray);
-        return t > 0 && t < tMax;
+        return distance(ray) < tMax;
     }
 
     @Override
     public void completeHit(Ray ray, ShadeRec sr) {
-        double px = ray.atX(sr.t);
-        double py = ray.atY(sr.t);
-        double pz = ray.atZ(sr.t);
-        // project onto the plane so the error along the normal stems from this step alone
-        double off = (px - ax) * nx + (py - ay) * ny + (pz - az) * nz;
-        px -= off * nx;
-        py -= off * ny;
-        pz -= off * nz;
-        sr.hitPoint.set(px, py, pz);
-        double g = Rounding.gamma(8);
-        double scale = Math.abs(ax) + Math.abs(ay) + Math.abs(az) + Math.abs(px) + Math.abs(py) + Math.abs(pz);
-        sr.hitError.set(g * scale, g * scale, g * scale);
-        sr.normal.set(nx, ny, nz);
-        sr.geometricNormal.set(nx, ny, nz);
-        double rx = px - ax;
-        double ry = py - ay;
-        double rz = pz - az;
+        PlanarHit.complete(ray, sr, ax, ay, az, nx, ny, nz);
+        double rx = sr.hitPoint.x - ax;
+        double ry = sr.hitPoint.y - ay;
+        double rz = sr.hitPoint.z - az;
         sr.u = rx * e1.x() + ry * e1.y() + rz * e1.z();
         sr.v = rx * e2.x() + ry * e2.y() + rz * e2.z();
     }

@@ -1,7 +1,5 @@
 package raytracer.tracers;
 
-import raytracer.core.Background;
-import raytracer.core.ShadeRec;
 import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
@@ -25,13 +23,6 @@ public final class RayCast implements Tracer {
             out.setBlack();
             return;
         }
-        ShadeRec sr = scratch.shadeRec(depth);
-        sr.depth = depth;
-        if (world.hit(ray, sr)) {
-            sr.material.shade(sr, out);
-        } else {
-            Background environment = scratch.environment(depth);
-            (environment != null ? environment : world.background()).radiance(ray, out);
-        }
+        Whitted.shadeClosest(world, ray, depth, scratch, out);
     }
 }

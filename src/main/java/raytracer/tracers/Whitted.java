@@ -25,6 +25,14 @@ public final class Whitted implements Tracer {
             out.setBlack();
             return;
         }
+        shadeClosest(world, ray, depth, scratch, out);
+    }
+
+    /**
+     * The tracers' common step: the closest hit's material shades it, and a ray that escapes sees
+     * the background, or the reflection map of the object it left (a per-object environment).
+     */
+    static void shadeClosest(World world, Ray ray, int depth, WorkerScratch scratch, Rgb out) {
         ShadeRec sr = scratch.shadeRec(depth);
         sr.depth = depth;
         if (world.hit(ray, sr)) {
