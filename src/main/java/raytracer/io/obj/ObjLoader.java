@@ -1,24 +1,20 @@
 package raytracer.io.obj;
 
+import java.io.BufferedReader;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InterruptedIOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.GZIPInputStream;
@@ -37,7 +33,7 @@ public final class ObjLoader {
     static final String NUMBER = "[-+]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?";
     /** Also catch nan and inf, to report them as such rather than as garbage. */
     private static final String ANY_NUMBER = "[-+]?(?:(?i:nan|inf(?:inity)?)|(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?)";
-    static final Pattern KEYWORD = Pattern.compile("\\s*([^\\s#]+)");
+    private static final Pattern KEYWORD = Pattern.compile("\\s*([^\\s#]+)");
     private static final Pattern VERTEX = Pattern.compile(
         "\\s*v\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")(?:\\s+" + ANY_NUMBER + "){0,4}\\s*(?:#.*)?");
     private static final Pattern TEXCOORD = Pattern.compile(
@@ -45,8 +41,8 @@ public final class ObjLoader {
     private static final Pattern NORMAL = Pattern.compile(
         "\\s*vn\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s*(?:#.*)?");
     /** Fast paths for the commonest lines (the dragon is nothing else); on failure the general patterns decide. */
-    static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
-    static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
+    private static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
+    private static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
     private static final Pattern FACE = Pattern.compile("\\s*f((?:\\s+[-+]?\\d+(?:/[-+]?\\d*(?:/[-+]?\\d+)?)?)+)\\s*(?:#.*)?");
     private static final Pattern CORNER = Pattern.compile("([-+]?\\d+)(?:/([-+]?\\d*)(?:/([-+]?\\d+))?)?");
     private static final Pattern NAMED = Pattern.compile("\\s*(mtllib|usemtl|o|g|s)(?:\\s+(.*?))?\\s*");
@@ -103,8 +99,23 @@ public final class ObjLoader {
 
     private ObjModel read(boolean smoothNormals) throws ObjException {
         try (InputStream raw = Files.newInputStream(file);
-             InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw) {
-            readChunks(new LineChunks(in));
+             InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw;
+             BufferedReader reader = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8), 1 << 16)) {
+            String text;
+            StringBuilder continued = null;
+            while ((text = reader.readLine()) != null) {
+                lineNumber++;
+                // a trailing backslash joins the next line to this one
+                if (text.endsWith("\\")) {
+                    continued = (continued == null ? new StringBuilder() : continued).append(text, 0, text.length() - 1).append(' ');
+                    continue;
+                }
+                if (continued != null) {
+                    text = continued.append(text).toString();
+                    continued = null;
+                }
+                parseLine(text);
+            }
         } catch (NoSuchFileException e) {
             throw new ObjException("cannot read mesh " + name + ": no such file");
         } catch (EOFException | ZipException e) {
@@ -116,122 +127,6 @@ public final class ObjLoader {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
         return new ObjModel(MeshAssembly.build(this, smoothNormals), List.copyOf(materials), List.copyOf(warnings));
-    }
-
-    /**
-     * Parses the chunks in parallel while this thread inflates and cuts the next ones, then appends
-     * their results in file order. A file of one chunk is parsed on this thread alone.
-     */
-    private void readChunks(LineChunks chunks) throws IOException, ObjException {
-        String first = chunks.next();
-        String second = first != null ? chunks.next() : null;
-        if (second == null) {
-            if (first != null) {
-                merge(first, PlainChunk.parse(first));
-            }
-            return;
-        }
-        int workers = Runtime.getRuntime().availableProcessors();
-        ExecutorService pool = Executors.newFixedThreadPool(workers, task -> {
-            Thread t = new Thread(task, "obj-parse");
-            t.setDaemon(true);
-            return t;
-        });
-        Deque<Map.Entry<String, Future<PlainChunk>>> inFlight = new ArrayDeque<>();
-        try {
-            inFlight.add(Map.entry(first, pool.submit(() -> PlainChunk.parse(first))));
-            inFlight.add(Map.entry(second, pool.submit(() -> PlainChunk.parse(second))));
-            String text;
-            while ((text = nextChunk(chunks, inFlight)) != null) {
-                // a few chunks ahead keep the workers busy; more would only hold text in memory
-                while (inFlight.size() > 2 * workers + 2) {
-                    mergeOldest(inFlight);
-                }
-                String chunk = text;
-                inFlight.add(Map.entry(chunk, pool.submit(() -> PlainChunk.parse(chunk))));
-            }
-            while (!inFlight.isEmpty()) {
-                mergeOldest(inFlight);
-            }
-        } finally {
-            pool.shutdownNow();
-        }
-    }
-
-    /** The next chunk; when the stream fails, the chunks read before it come first, with their errors. */
-    private String nextChunk(LineChunks chunks, Deque<Map.Entry<String, Future<PlainChunk>>> inFlight)
-            throws IOException, ObjException {
-        try {
-            return chunks.next();
-        } catch (IOException e) {
-            while (!inFlight.isEmpty()) {
-                mergeOldest(inFlight);
-            }
-            throw e;
-        }
-    }
-
-    private void mergeOldest(Deque<Map.Entry<String, Future<PlainChunk>>> inFlight) throws IOException, ObjException {
-        Map.Entry<String, Future<PlainChunk>> oldest = inFlight.remove();
-        try {
-            merge(oldest.getKey(), oldest.getValue().get());
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new InterruptedIOException("interrupted while parsing");
-        } catch (ExecutionException e) {
-            throw new IllegalStateException(e.getCause());
-        }
-    }
-
-    /**
-     * Appends a chunk's plain parse, if it had one and its faces name only vertices defined so far;
-     * otherwise parses its lines here, in order, with everything read before them.
-     */
-    private void merge(String text, PlainChunk chunk) throws ObjException {
-        if (chunk.general || chunk.excess > positions.size / 3) {
-            parseLines(text);
-            return;
-        }
-        positions.addAll(chunk.positions, chunk.positionCount);
-        cornerV.addAll(chunk.corners, chunk.cornerCount);
-        // as parsePlainTriangle would have added them, one by one
-        if (cornerVt != null) {
-            cornerVt.fill(-1, chunk.cornerCount);
-        }
-        if (cornerVn != null) {
-            cornerVn.fill(-1, chunk.cornerCount);
-        }
-        if (materialsUsed) {
-            materialIds.fill(currentMaterial, chunk.cornerCount / 3);
-        }
-        lineNumber += chunk.lines;
-    }
-
-    /** The lines of a chunk one by one, as BufferedReader.readLine splits them. */
-    private void parseLines(String text) throws ObjException {
-        StringBuilder continued = null;
-        int start = 0;
-        int length = text.length();
-        while (start < length) {
-            int end = start;
-            while (end < length && text.charAt(end) != '\n' && text.charAt(end) != '\r') {
-                end++;
-            }
-            String line = text.substring(start, end);
-            start = end < length && text.charAt(end) == '\r' && end + 1 < length && text.charAt(end + 1) == '\n'
-                    ? end + 2 : end + 1;
-            lineNumber++;
-            // a trailing backslash joins the next line to this one
-            if (line.endsWith("\\")) {
-                continued = (continued == null ? new StringBuilder() : continued).append(line, 0, line.length() - 1).append(' ');
-                continue;
-            }
-            if (continued != null) {
-                line = continued.append(line).toString();
-                continued = null;
-            }
-            parseLine(line);
-        }
     }
 
     private void parseLine(String text) throws ObjException {
