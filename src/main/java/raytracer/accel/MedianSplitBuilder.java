@@ -18,19 +18,31 @@ import java.util.concurrent.RecursiveAction;
  *
  * <p>Because a node always halves its count, the size of every subtree follows from its count
  * alone; each subtree therefore knows its place in the depth-first records before it is built, and
- * large subtrees are built in parallel with the same result as a serial build.
+ * large subtrees are built in parallel with the same records and leaf order as a serial build
+ * (MedianSplitBuilderTest).
  */
 public final class MedianSplitBuilder {
     /** Below this many primitives a subtree is built on the current thread. */
     private static final int PARALLEL_THRESHOLD = 32_768;
 
     private final int leafSize;
+    private final int parallelThreshold;
 
     public MedianSplitBuilder(int leafSize) {
+        this(leafSize, PARALLEL_THRESHOLD);
+    }
+
+    /**
+     * With subtrees of more than {@code parallelThreshold} primitives built as parallel tasks (for
+     * tests: {@code Integer.MAX_VALUE} builds serially). Kept above twice the leaf size, so that
+     * both halves of a parallel node are interior nodes.
+     */
+    MedianSplitBuilder(int leafSize, int parallelThreshold) {
         if (leafSize < 1) {
             throw new IllegalArgumentException("leaf size must be at least 1, got " + leafSize);
         }
         this.leafSize = leafSize;
+        this.parallelThreshold = Math.max(parallelThreshold, 2 * leafSize + 1);
     }
 
     /** Builds over primitives whose boxes are {@code primBounds[6i .. 6i+6)} = (x0, y0, z0, x1, y1, z1). */
@@ -71,7 +83,7 @@ public final class MedianSplitBuilder {
         }
         int[] records = new int[FlatBVH.RECORD * interior];
         Job job = new Job(boxes, order, records, sizes, 0, 0, n, longestAxis(root, 0));
-        if (n > PARALLEL_THRESHOLD) {
+        if (n > parallelThreshold) {
             ForkJoinPool.commonPool().invoke(job);
         } else {
             job.compute();
@@ -151,7 +163,7 @@ public final class MedianSplitBuilder {
 
     /**
      * Builds the subtree over positions [from, to) into record {@code record} and after: above
-     * {@link #PARALLEL_THRESHOLD} primitives both halves become parallel tasks, whose record
+     * the parallel threshold both halves become parallel tasks, whose record
      * numbers come from {@link #interiorNodes}; below it, {@link #buildSerial}.
      */
     private final class Job extends RecursiveAction {
@@ -179,13 +191,13 @@ public final class MedianSplitBuilder {
 
         @Override
         protected void compute() {
-            if (to - from <= PARALLEL_THRESHOLD) {
+            if (to - from <= parallelThreshold) {
                 buildSerial(boxes, order, records, record, from, to, axis);
                 return;
             }
             float[] childBoxes = halve(boxes, order, records, record, from, to, axis);
             int mid = from + (to - from) / 2;
-            // both halves are far above a leaf here
+            // both halves are interior nodes here: the threshold is above twice the leaf size
             int leftRecord = record + 1;
             int rightRecord = leftRecord + interiorNodes(mid - from, sizes);
             int r = FlatBVH.RECORD * record;

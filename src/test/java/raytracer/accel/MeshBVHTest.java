@@ -21,7 +21,7 @@ class MeshBVHTest {
     }
 
     /** A soup of random triangles of mixed sizes, overlapping, some degenerate. */
-    private static Mesh soup(int n, long seed) {
+    static Mesh soup(int n, long seed) {
         SplittableRandom r = new SplittableRandom(seed);
         double[] p = new double[9 * n];
         int[] f = new int[3 * n];

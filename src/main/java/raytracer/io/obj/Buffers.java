@@ -8,8 +8,25 @@ final class Buffers {
     }
 
     static final class Doubles {
-        double[] data = new double[1024];
+        double[] data;
         int size;
+
+        Doubles() {
+            this(1024);
+        }
+
+        Doubles(int capacity) {
+            data = new double[Math.max(16, capacity)];
+        }
+
+        /** Appends a[0 .. count). */
+        void addAll(double[] a, int count) {
+            if (size + count > data.length) {
+                data = Arrays.copyOf(data, Math.max(2 * data.length, size + count));
+            }
+            System.arraycopy(a, 0, data, size, count);
+            size += count;
+        }
 
         void add(double v) {
             if (size == data.length) {
@@ -36,8 +53,25 @@ final class Buffers {
     }
 
     static final class Ints {
-        int[] data = new int[1024];
+        int[] data;
         int size;
+
+        Ints() {
+            this(1024);
+        }
+
+        Ints(int capacity) {
+            data = new int[Math.max(16, capacity)];
+        }
+
+        /** Appends a[0 .. count). */
+        void addAll(int[] a, int count) {
+            if (size + count > data.length) {
+                data = Arrays.copyOf(data, Math.max(2 * data.length, size + count));
+            }
+            System.arraycopy(a, 0, data, size, count);
+            size += count;
+        }
 
         void add(int v) {
             if (size == data.length) {

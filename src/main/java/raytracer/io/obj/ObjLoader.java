@@ -1,11 +1,8 @@
 package raytracer.io.obj;
 
-import java.io.BufferedReader;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -24,7 +21,9 @@ import raytracer.shapes.mesh.Mesh;
 /**
  * Loads a Wavefront OBJ file (optionally gzip-compressed, {@code .gz}) into one {@link Mesh}. Each
  * line is recognised by a precompiled pattern whose matcher is reused, and numbers are read from
- * the matched spans. Faces with more than three corners are fan-triangulated; negative indices
+ * the matched spans; chunks of plain vertex and triangle lines are parsed in parallel
+ * ({@link ChunkPipeline}), everything else and every error in file order, so messages name the
+ * exact line. Faces with more than three corners are fan-triangulated; negative indices
  * count back from the last vertex. A corner is a (v, vt, vn) triple; when the file has only
  * positions the mesh uses its vertex array as is, otherwise each distinct triple becomes one mesh
  * vertex.
@@ -33,7 +32,7 @@ public final class ObjLoader {
     static final String NUMBER = "[-+]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?";
     /** Also catch nan and inf, to report them as such rather than as garbage. */
     private static final String ANY_NUMBER = "[-+]?(?:(?i:nan|inf(?:inity)?)|(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?)";
-    private static final Pattern KEYWORD = Pattern.compile("\\s*([^\\s#]+)");
+    static final Pattern KEYWORD = Pattern.compile("\\s*([^\\s#]+)");
     private static final Pattern VERTEX = Pattern.compile(
         "\\s*v\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")(?:\\s+" + ANY_NUMBER + "){0,4}\\s*(?:#.*)?");
     private static final Pattern TEXCOORD = Pattern.compile(
@@ -41,8 +40,8 @@ public final class ObjLoader {
     private static final Pattern NORMAL = Pattern.compile(
         "\\s*vn\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s*(?:#.*)?");
     /** Fast paths for the commonest lines (the dragon is nothing else); on failure the general patterns decide. */
-    private static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
-    private static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
+    static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
+    static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
     private static final Pattern FACE = Pattern.compile("\\s*f((?:\\s+[-+]?\\d+(?:/[-+]?\\d*(?:/[-+]?\\d+)?)?)+)\\s*(?:#.*)?");
     private static final Pattern CORNER = Pattern.compile("([-+]?\\d+)(?:/([-+]?\\d*)(?:/([-+]?\\d+))?)?");
     private static final Pattern NAMED = Pattern.compile("\\s*(mtllib|usemtl|o|g|s)(?:\\s+(.*?))?\\s*");
@@ -99,23 +98,8 @@ public final class ObjLoader {
 
     private ObjModel read(boolean smoothNormals) throws ObjException {
         try (InputStream raw = Files.newInputStream(file);
-             InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw;
-             BufferedReader reader = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8), 1 << 16)) {
-            String text;
-            StringBuilder continued = null;
-            while ((text = reader.readLine()) != null) {
-                lineNumber++;
-                // a trailing backslash joins the next line to this one
-                if (text.endsWith("\\")) {
-                    continued = (continued == null ? new StringBuilder() : continued).append(text, 0, text.length() - 1).append(' ');
-                    continue;
-                }
-                if (continued != null) {
-                    text = continued.append(text).toString();
-                    continued = null;
-                }
-                parseLine(text);
-            }
+             InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw) {
+            ChunkPipeline.run(new LineChunks(in), this::merge);
         } catch (NoSuchFileException e) {
             throw new ObjException("cannot read mesh " + name + ": no such file");
         } catch (EOFException | ZipException e) {
@@ -127,6 +111,57 @@ public final class ObjLoader {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
         return new ObjModel(MeshAssembly.build(this, smoothNormals), List.copyOf(materials), List.copyOf(warnings));
+    }
+
+    /**
+     * Appends a chunk's plain parse, if it had one and its faces name only vertices defined so far;
+     * otherwise parses its lines here, in order, with everything read before them.
+     */
+    private void merge(String text, PlainChunk chunk) throws ObjException {
+        if (chunk.general || chunk.excess > positions.size / 3) {
+            parseLines(text);
+            return;
+        }
+        positions.addAll(chunk.positions, chunk.positionCount);
+        cornerV.addAll(chunk.corners, chunk.cornerCount);
+        // as parsePlainTriangle would have added them, one by one
+        if (cornerVt != null) {
+            cornerVt.fill(-1, chunk.cornerCount);
+        }
+        if (cornerVn != null) {
+            cornerVn.fill(-1, chunk.cornerCount);
+        }
+        if (materialsUsed) {
+            materialIds.fill(currentMaterial, chunk.cornerCount / 3);
+        }
+        lineNumber += chunk.lines;
+    }
+
+    /** The lines of a chunk one by one, as BufferedReader.readLine splits them. */
+    private void parseLines(String text) throws ObjException {
+        StringBuilder continued = null;
+        int start = 0;
+        int length = text.length();
+        while (start < length) {
+            int end = start;
+            while (end < length && text.charAt(end) != '\n' && text.charAt(end) != '\r') {
+                end++;
+            }
+            String line = text.substring(start, end);
+            start = end < length && text.charAt(end) == '\r' && end + 1 < length && text.charAt(end + 1) == '\n'
+                    ? end + 2 : end + 1;
+            lineNumber++;
+            // a trailing backslash joins the next line to this one
+            if (line.endsWith("\\")) {
+                continued = (continued == null ? new StringBuilder() : continued).append(line, 0, line.length() - 1).append(' ');
+                continue;
+            }
+            if (continued != null) {
+                line = continued.append(line).toString();
+                continued = null;
+            }
+            parseLine(line);
+        }
     }
 
     private void parseLine(String text) throws ObjException {

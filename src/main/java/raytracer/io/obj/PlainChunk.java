@@ -1,0 +1,129 @@
+package raytracer.io.obj;
+
+import java.util.regex.Matcher;
+
+/**
+ * The parse of a chunk that holds nothing but the commonest lines, "v x y z" and "f a b c" with
+ * positive indices (besides blanks and comments): the whole of a scanned mesh. It needs no state
+ * from the lines before it, so chunks are parsed in parallel and appended in order. Any other line
+ * makes the chunk {@link #general}: it is then parsed line by line in order, as is every error, so
+ * messages and relative indices come out as from a serial read.
+ */
+final class PlainChunk {
+    /** The chunk's result when a line needs the general parser. */
+    static final PlainChunk GENERAL = new PlainChunk(true, null, 0, null, 0, 0, 0);
+
+    /** True when a line needs the general parser. */
+    final boolean general;
+    final double[] positions;
+    final int positionCount;
+    /** 0-based vertex indices, three a triangle. */
+    final int[] corners;
+    final int cornerCount;
+    /** Lines in the chunk: '\n', '\r' and "\r\n" each end one, as in BufferedReader.readLine. */
+    final int lines;
+    /**
+     * The largest (index - vertices defined earlier in the chunk) over all corners: the faces are
+     * in range when the vertices before the chunk are at least this many.
+     */
+    final int excess;
+
+    private PlainChunk(boolean general, double[] positions, int positionCount, int[] corners, int cornerCount,
+                       int lines, int excess) {
+        this.general = general;
+        this.positions = positions;
+        this.positionCount = positionCount;
+        this.corners = corners;
+        this.cornerCount = cornerCount;
+        this.lines = lines;
+        this.excess = excess;
+    }
+
+    static PlainChunk parse(String text) {
+        Parser parser = new Parser(text);
+        int lines = 0;
+        int start = 0;
+        int length = text.length();
+        // a '\r' alone ends a line too; indexOf is an intrinsic, so the next '\r' is looked up ahead
+        int cr = indexOrLength(text, '\r', 0);
+        while (start < length) {
+            int end = Math.min(indexOrLength(text, '\n', start), cr);
+            lines++;
+            if (!parser.line(start, end)) {
+                return GENERAL;
+            }
+            start = end < length - 1 && text.charAt(end) == '\r' && text.charAt(end + 1) == '\n' ? end + 2 : end + 1;
+            if (cr < start) {
+                cr = indexOrLength(text, '\r', start);
+            }
+        }
+        return new PlainChunk(false, parser.positions.data, parser.positions.size, parser.corners.data,
+                              parser.corners.size, lines, parser.excess);
+    }
+
+    private static int indexOrLength(String text, char c, int from) {
+        int i = text.indexOf(c, from);
+        return i < 0 ? text.length() : i;
+    }
+
+    /**
+     * One line at a time, each in a small method: the JIT compiles a method called many times long
+     * before it replaces a loop running inside one call (one 2x slower parse, cold, in one method).
+     */
+    private static final class Parser {
+        private final String text;
+        private final Matcher vertex;
+        private final Matcher triangle;
+        private final Matcher keyword;
+        // a chunk of a scanned mesh is about 1/3 vertices and 2/3 triangles, of some 25 bytes a line
+        final Buffers.Doubles positions;
+        final Buffers.Ints corners;
+        int excess = Integer.MIN_VALUE;
+
+        Parser(String text) {
+            this.text = text;
+            vertex = ObjLoader.VERTEX_PLAIN.matcher(text);
+            triangle = ObjLoader.TRIANGLE_PLAIN.matcher(text);
+            keyword = ObjLoader.KEYWORD.matcher(text);
+            positions = new Buffers.Doubles(text.length() / 16);
+            corners = new Buffers.Ints(text.length() / 8);
+        }
+
+        /** Parses the line [start, end); false when it needs the general parser. */
+        boolean line(int start, int end) {
+            if (end > start && text.charAt(end - 1) == '\\') {
+                return false; // continued
+            }
+            if (vertex.region(start, end).matches()) {
+                return vertex();
+            }
+            if (triangle.region(start, end).matches()) {
+                return triangle();
+            }
+            return !keyword.region(start, end).lookingAt(); // blank or comment
+        }
+
+        private boolean vertex() {
+            for (int g = 1; g <= 3; g++) {
+                double v = Numbers.parseDouble(text, vertex.start(g), vertex.end(g));
+                if (!Double.isFinite(v)) {
+                    return false;
+                }
+                positions.add(v);
+            }
+            return true;
+        }
+
+        private boolean triangle() {
+            for (int g = 1; g <= 3; g++) {
+                int index = Numbers.parseInt(text, triangle.start(g), triangle.end(g));
+                if (index == 0) {
+                    return false;
+                }
+                corners.add(index - 1);
+                excess = Math.max(excess, index - positions.size / 3);
+            }
+            return true;
+        }
+    }
+}
