@@ -104,6 +104,11 @@ public final class Dielectric extends Material {
         this.reflectionMap = reflectionMap;
     }
 
+    /** The index of refraction inside the surface (outside is vacuum). */
+    public double ior() {
+        return transmitter.ior();
+    }
+
     @Override
     public boolean tracesSecondaryRays() {
         return true;

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static raytracer.shapes.HitTesting.ray;
 
+import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
 import raytracer.math.Normal;
@@ -43,5 +44,36 @@ class PlaneTest {
         assertFalse(sr.frontFace);
         assertEquals(-1, sr.normal.y, 0);
         assertTrue(h.shadowHit(ground, ray(0, -3, 0, 0, 1, 0), 5));
+    }
+
+    @Test
+    void uvsAreDistancesAlongTwoOrthogonalAxesOfThePlane() {
+        Point3D anchor = new Point3D(1, -2, 0.5);
+        Plane tilted = new Plane(anchor, new Normal(0.3, 1, -0.6));
+        SplittableRandom r = new SplittableRandom(4);
+        double[] previous = null;
+        for (int i = 0; i < 200; i++) {
+            // a ray towards the plane from above and to the side
+            ShadeRec sr = h.hit(tilted, ray(r.nextDouble(-5, 5), 10, r.nextDouble(-5, 5),
+                                            r.nextDouble(-0.5, 0.5), -1, r.nextDouble(-0.5, 0.5)));
+            assertNotNull(sr);
+            double[] now = {sr.hitPoint.x, sr.hitPoint.y, sr.hitPoint.z, sr.u, sr.v};
+            double dx = now[0] - anchor.x();
+            double dy = now[1] - anchor.y();
+            double dz = now[2] - anchor.z();
+            assertEquals(Math.sqrt(dx * dx + dy * dy + dz * dz), Math.hypot(sr.u, sr.v), 1e-9, "distance from the anchor, ray " + i);
+            if (previous != null) {
+                double ex = now[0] - previous[0];
+                double ey = now[1] - previous[1];
+                double ez = now[2] - previous[2];
+                assertEquals(Math.sqrt(ex * ex + ey * ey + ez * ez), Math.hypot(now[3] - previous[3], now[4] - previous[4]), 1e-9,
+                             "(u, v) is an isometry of the plane, ray " + i);
+            }
+            previous = now;
+        }
+        // the horizontal ground's axes are z and x
+        ShadeRec sr = h.hit(ground, ray(2, 5, 3, 0, -1, 0));
+        assertEquals(3, sr.u, 1e-12);
+        assertEquals(2, sr.v, 1e-12);
     }
 }

@@ -100,4 +100,27 @@ class SphereTest {
         assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, 0));
         assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, Double.NaN));
     }
+
+    @Test
+    void uvsAreLongitudeAndLatitudeAroundTheYAxis() {
+        Sphere sphere = new Sphere(new Point3D(3, -2, 1), 2);
+        // (direction from the centre, u, v): u = (atan2(x, z) + pi) / 2pi, v = 1 - theta / pi (Suffern 29.3)
+        double[][] cases = {
+            {0, 0, 1, 0.5, 0.5}, {1, 0, 0, 0.75, 0.5}, {0, 0, -1, 1.0, 0.5}, {-1, 0, 0, 0.25, 0.5},
+            {0, 1, 0, 0.5, 1}, {0, -1, 0, 0.5, 0}, {0, Math.sqrt(0.5), Math.sqrt(0.5), 0.5, 0.75},
+        };
+        for (double[] c : cases) {
+            // a ray from outside straight at the centre along -direction
+            ShadeRec sr = h.hit(sphere, ray(3 + 5 * c[0], -2 + 5 * c[1], 1 + 5 * c[2], -c[0], -c[1], -c[2]));
+            assertNotNull(sr);
+            String what = "direction " + c[0] + ", " + c[1] + ", " + c[2];
+            if (Math.abs(c[1]) < 1) {
+                // at the poles u is undefined; anything in [0, 1] will do
+                double wrapped = Math.IEEEremainder(sr.u - c[3], 1); // u = 0 and u = 1 are the same seam
+                assertEquals(0, wrapped, 1e-12, "u " + sr.u + ", " + what);
+            }
+            assertTrue(sr.u >= 0 && sr.u <= 1, what);
+            assertEquals(c[4], sr.v, 1e-12, "v, " + what);
+        }
+    }
 }

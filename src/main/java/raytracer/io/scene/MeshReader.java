@@ -15,6 +15,8 @@ import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.io.obj.ObjModel;
+import raytracer.materials.Dielectric;
+import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.math.RGBColor;
@@ -113,10 +115,23 @@ final class MeshReader {
         }
     }
 
-    /** Kd (or map_Kd) to a Lambertian, Ks and Ns to a Phong lobe. An unreadable map_Kd is a warning. */
+    /**
+     * An MTL material onto ours: Ke to a visible emitter; d (or Tr) below 1 to glass of index Ni;
+     * otherwise Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong lobe. An
+     * unreadable map_Kd is a warning.
+     */
     static Material fromMtl(ObjMaterial m, TextureReader textures, World world) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
+        RGBColor ke = new RGBColor(m.ke()[0], m.ke()[1], m.ke()[2]);
+        if (ke.max() > 0) {
+            return new Emissive(1, ke);
+        }
+        if (m.dissolve() < 1) {
+            // exporters write "Ni 1" whatever the material, and glass of index 1 would be invisible
+            double ior = m.ior() > 1 ? m.ior() : MaterialReader.IOR;
+            return new Dielectric(ior, RGBColor.BLACK, ks.max(), Math.max(m.ns(), 1));
+        }
         Texture texture = null;
         if (m.mapKd() != null) {
             try {

@@ -3,6 +3,7 @@ package raytracer.io.obj;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -46,9 +47,10 @@ class ObjLoaderTest {
             + "f 1 2 3\n"            // v
             + "f 1/1 2/2 3/3\n"      // v/vt
             + "f 1//1 2//1 3//1\n"   // v//vn
-            + "f -4/-3/-1 -3/-2/-1 -2/-1/-1\n"); // v/vt/vn, relative
+            + "f -4/-3/-1 -3/-2/-1 -2/-1/-1\n" // v/vt/vn, relative
+            + "f 1/1/1 2/2/1 3/3/1\n"); // the same triples again, absolute
         Mesh mesh = m.mesh();
-        assertEquals(4, mesh.triangleCount());
+        assertEquals(5, mesh.triangleCount());
         assertTrue(mesh.hasUvs() && mesh.hasNormals());
         // the relative face names vertices 1, 2, 3, texture coordinates 1, 2, 3 and normal 1
         double[][] positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
@@ -59,9 +61,12 @@ class ObjLoaderTest {
             assertArrayEquals(uvs[k], Arrays.copyOfRange(mesh.uvs(), 2 * v, 2 * v + 2), 0);
             assertEquals(1f, mesh.normals()[3 * v + 2]);
         }
-        // the same (v, vt, vn) triple is one mesh vertex: faces 2 and 4 differ in vn only
-        assertEquals(mesh.vertex(3, 0), mesh.vertex(3, 0));
-        assertTrue(mesh.vertexCount() <= 12);
+        // the same (v, vt, vn) triple is one mesh vertex, however its indices are written
+        for (int k = 0; k < 3; k++) {
+            assertEquals(mesh.vertex(3, k), mesh.vertex(4, k), "corner " + k);
+            assertNotEquals(mesh.vertex(1, k), mesh.vertex(3, k), "faces 2 and 4 differ in vn");
+        }
+        assertTrue(mesh.vertexCount() <= 12, "at most one vertex per distinct triple: " + mesh.vertexCount());
     }
 
     @Test

@@ -1,0 +1,125 @@
+package raytracer.io.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import raytracer.cameras.Pinhole;
+import raytracer.core.Material;
+import raytracer.core.ShadeRec;
+import raytracer.core.ViewPlane;
+import raytracer.core.WorkerScratch;
+import raytracer.core.World;
+import raytracer.io.obj.ObjLoader;
+import raytracer.io.obj.ObjMaterial;
+import raytracer.lights.Ambient;
+import raytracer.materials.Dielectric;
+import raytracer.materials.Emissive;
+import raytracer.materials.Matte;
+import raytracer.materials.Phong;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+import raytracer.math.Vector3D;
+
+/** How the keys of an MTL file become our materials. */
+class MeshReaderTest {
+
+    @Test
+    void mtlKeysChooseTheMaterial(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("m.mtl"), String.join("\n",
+            "newmtl chalk", "Kd 0.5 0.6 0.7",
+            "newmtl plastic", "Kd 0.2 0.2 0.8", "Ks 0.5 0.5 0.5", "Ns 60",
+            "newmtl window", "Kd 1 1 1", "d 0.2", "Ni 1",
+            "newmtl water", "Tr 0.9", "Ni 1.33",
+            "newmtl lamp", "Kd 1 1 1", "Ke 4 3 2",
+            "newmtl unlit-shine", "Ks 1 1 1", ""));
+        StringBuilder obj = new StringBuilder("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+        for (String name : List.of("chalk", "plastic", "window", "water", "lamp", "unlit-shine")) {
+            obj.append("usemtl ").append(name).append("\nf 1 2 3\n"); // the loader keeps the materials faces use
+        }
+        Files.writeString(dir.resolve("m.obj"), obj);
+        List<ObjMaterial> mtl = ObjLoader.load(dir.resolve("m.obj"), false).materials();
+        World world = world();
+        TextureReader textures = new TextureReader(new Source(dir.resolve("s.yaml").toString(), dir));
+        Material[] m = new Material[mtl.size()];
+        for (int i = 0; i < m.length; i++) {
+            m[i] = MeshReader.fromMtl(mtl.get(i), textures, world);
+        }
+        assertEquals(6, m.length, mtl.toString());
+        assertInstanceOf(Matte.class, m[0]);
+        assertInstanceOf(Phong.class, m[1], "Ks with Ns adds a Phong lobe");
+        assertEquals(1.5, assertInstanceOf(Dielectric.class, m[2]).ior(), 0, "d < 1 with the exporters' default Ni 1 is glass");
+        assertEquals(1.33, assertInstanceOf(Dielectric.class, m[3]).ior(), 0, "Tr is 1 - d");
+        assertInstanceOf(Emissive.class, m[4]);
+        assertInstanceOf(Matte.class, m[5], "Ks without Ns has no lobe to shape");
+
+        ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+        Rgb out = new Rgb();
+        sr.frontFace = true;
+        m[4].shade(sr, out);
+        assertEquals(4, out.r, 0);
+        assertEquals(3, out.g, 0);
+        assertEquals(2, out.b, 0);
+        sr.frontFace = false;
+        m[4].shade(sr, out);
+        assertEquals(0, out.r + out.g + out.b, 0, "an emitter is dark from behind");
+        assertTrue(world.warnings().isEmpty(), world.warnings().toString());
+    }
+
+    @Test
+    void normalMapKeysOfAMeshObject(@TempDir Path dir) throws Exception {
+        // a quad in z = 0 facing +z, with UVs, and a uniform object-space map encoding (0.6, 0, 0.8)
+        Files.writeString(dir.resolve("quad.obj"),
+            "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+        BufferedImage map = new BufferedImage(2, 2, BufferedImage.TYPE_INT_RGB);
+        for (int k = 0; k < 4; k++) {
+            map.setRGB(k % 2, k / 2, (204 << 16) | (128 << 8) | 230);
+        }
+        ImageIO.write(map, "png", dir.resolve("n.png").toFile());
+        Vec3 mapped = normalAtCentre(dir, "normal-map: {file: n.png, space: object}");
+        assertEquals(2 * 204 / 255.0 - 1, mapped.x, 0.01);
+        assertEquals(0, mapped.y, 0.01);
+        assertEquals(2 * 230 / 255.0 - 1, mapped.z, 0.01);
+        Vec3 plain = normalAtCentre(dir, "normal-map: none");
+        assertEquals(1, plain.z, 1e-12, "no map: the face normal");
+
+        String[][] bad = {
+            {"normal-map: {file: n.png, space: world}", "unknown normal-map space 'world'; allowed: object, tangent"},
+            {"normal-map: yes", "'normal-map' is {file, space} or none"},
+            {"normal-map: {file: gone.png}", "gone.png"},
+            {"normal-map: {file: n.png, scale: 2}", "'scale'"},
+        };
+        for (String[] b : bad) {
+            Files.writeString(dir.resolve("bad.yaml"), "objects:\n  - {type: mesh, file: quad.obj, " + b[0] + "}\n");
+            SceneException e = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("bad.yaml")), b[0]);
+            assertTrue(e.getMessage().startsWith(dir.resolve("bad.yaml") + ":2:"), e.getMessage());
+            assertTrue(e.getMessage().contains(b[1]), b[1] + " missing from: " + e.getMessage());
+        }
+    }
+
+    /** The shading normal where a ray from +z meets the quad of {@code quad.obj} under these keys. */
+    private static Vec3 normalAtCentre(Path dir, String keys) throws Exception {
+        Files.writeString(dir.resolve("s.yaml"), "objects:\n  - {type: mesh, file: quad.obj, " + keys + "}\n");
+        World world = SceneLoader.load(dir.resolve("s.yaml"));
+        world.prepare();
+        ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+        assertTrue(world.hit(new Ray().set(0.1, 0.2, 3, 0, 0, -1), sr));
+        return new Vec3().set(sr.normal);
+    }
+
+    private static World world() {
+        return new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 2, 1),
+            new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE));
+    }
+}
