@@ -128,7 +128,35 @@ class RenderCommandTest {
         int centre = image.getRGB(32, 32) & 0xff;
         int corner = image.getRGB(1, 1) & 0xff;
         assertTrue(centre > corner + 50, "centre " + centre + " should be brighter than corner " + corner);
-        assertTrue(r.err().contains("bounding-volume tests per ray") && r.err().contains("peak heap"), r.err());
+        assertTrue(r.err().contains("bounding-volume tests (BVH nodes visited) per ray") && r.err().contains("peak heap"), r.err());
+    }
+
+    @Test
+    void statsCountEveryRayByKind() throws IOException {
+        // a wall filling the view, lit from in front: one shadow ray per primary ray; a mirror wall
+        // adds one reflected ray per primary ray, which escapes and needs no shadow ray
+        for (String material : new String[] {"matte", "reflective"}) {
+            Path s = scene(material + ".yaml", "image: {width: 20, height: 10, samples: 4}\n"
+                + "camera: {eye: [0, 0, 5], look-at: [0, 0, 0], fov: 40}\n"
+                + "lights:\n  - {type: point, position: [0, 0, 3], intensity: 10}\n"
+                + "materials:\n  m: {type: " + material + "}\n"
+                + "objects:\n  - {type: plane, point: [0, 0, -2], normal: [0, 0, 1], material: m}\n");
+            Result r = run(s.toString(), "-o", dir.resolve(material + ".png").toString(), "--stats", "--spp", "3");
+            assertEquals(0, r.code(), r.err());
+            java.util.regex.Matcher m = java.util.regex.Pattern
+                .compile("stats: rays (\\d+) \\(primary (\\d+), shadow (\\d+), secondary (\\d+)\\), ([0-9.]+) M rays/s").matcher(r.err());
+            assertTrue(m.find(), r.err());
+            long primary = 20 * 10 * 4; // the default sampler rounds 3 samples up to a square, 4
+            assertTrue(r.err().contains("20x10, 4 spp"), "the summary names the samples really taken: " + r.err());
+            long secondary = material.equals("reflective") ? primary : 0;
+            assertEquals(primary, Long.parseLong(m.group(2)), "primary, " + material);
+            assertEquals(primary, Long.parseLong(m.group(3)), "shadow, " + material);
+            assertEquals(secondary, Long.parseLong(m.group(4)), "secondary, " + material);
+            assertEquals(2 * primary + secondary, Long.parseLong(m.group(1)), "total, " + material);
+            assertTrue(Double.parseDouble(m.group(5)) > 0, r.err());
+            assertTrue(r.err().contains("stats: load scene") && r.err().matches("(?s).*render \\d+\\.\\d{3} s.*"), r.err());
+            assertTrue(r.err().matches("(?s).*stats: [0-9.]+ bounding-volume tests \\(BVH nodes visited\\) per ray, peak heap [1-9]\\d* MiB.*"), r.err());
+        }
     }
 
     @Test
