@@ -123,4 +123,19 @@ class DielectricTest {
             }
         }
     }
+
+    @Test
+    void totalInternalReflectionLosesNothing() {
+        // inside a glass cube, looking along (0.8, 0, 0.6): the z faces are met at 53 degrees, past the
+        // critical angle asin(1 / 1.5) = 41.8, so all of it turns back; the x faces at 37 degrees let
+        // most through. In a white world every path ends in the background: each pixel is exactly 1;
+        // a dielectric that dropped totally reflected rays would lose the 11% the first x face reflects.
+        GeometricObject cube = with(new Box(new Point3D(-1, -1, -1), new Point3D(1, 1, 1)), new Dielectric(1.5, RGBColor.BLACK, 0, 1));
+        Film film = render(new Pinhole(new Point3D(0, 0, -0.5), new Point3D(0.8, 0, 0.1), Vector3D.UP, 1), 3, RGBColor.WHITE, cube);
+        for (int y = 0; y < 3; y++) {
+            for (int x = 0; x < 3; x++) {
+                assertEquals(1, film.get(x, y, 0), 1e-6, "pixel " + x + "," + y);
+            }
+        }
+    }
 }
