@@ -11,11 +11,12 @@ import raytracer.image.Film;
 import raytracer.image.ImageFiles;
 import raytracer.math.RGBColor;
 import raytracer.textures.Checker;
+import raytracer.textures.ConstantColor;
 import raytracer.textures.EnvironmentMap;
 import raytracer.textures.ImageTexture;
 
 /**
- * Textures ({@code texture: {type: checker | image, ...}}) and environment maps
+ * Textures ({@code texture: {type: checker | constant | image, ...}}) and environment maps
  * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
  */
 final class TextureReader {
@@ -35,11 +36,15 @@ final class TextureReader {
                 return new Checker(t.color("color-a", RGBColor.WHITE), t.color("color-b", RGBColor.gray(0.1)),
                                    t.number("size", 0.1, 0, true));
             }
+            case "constant" -> {
+                YamlObject t = new YamlObject(source, node, "constant texture", Set.of("type", "color"));
+                return new ConstantColor(t.color("color", RGBColor.WHITE));
+            }
             case "image" -> {
                 YamlObject t = new YamlObject(source, node, "image texture", Set.of("type", "file"));
                 return new ImageTexture(image(t));
             }
-            default -> throw source.error(YamlObject.typeNode(node), "unknown texture type '" + kind + "'; allowed: checker, image");
+            default -> throw source.error(YamlObject.typeNode(node), "unknown texture type '" + kind + "'; allowed: checker, constant, image");
         }
     }
 
