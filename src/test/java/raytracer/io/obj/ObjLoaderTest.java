@@ -125,6 +125,19 @@ class ObjLoaderTest {
     }
 
     @Test
+    void bumpAndNormAreNamesForTheNormalMap() throws Exception {
+        Files.write(dir.resolve("n.png"), new byte[] {1});
+        write("lib.mtl", "newmtl a\nbump n.png\nnewmtl b\nnorm n.png\nnewmtl c\nmap_bump -bm 2 n.png\n");
+        ObjModel m = load("mtllib lib.mtl\n" + SQUARE + "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl c\nf 2 3 4\n");
+        assertEquals(3, m.materials().size());
+        for (ObjMaterial material : m.materials()) {
+            assertEquals(dir.resolve("n.png"), material.mapBump(), material.name());
+        }
+        assertEquals(2, m.materials().get(2).bumpScale(), 0);
+        assertTrue(m.warnings().isEmpty(), m.warnings().toString());
+    }
+
+    @Test
     void missingLibraryAndTextureAreWarningsNotFailures() throws Exception {
         write("lib.mtl", "newmtl m\nKd 1 0 0\nmap_Kd nowhere.png\n");
         ObjModel m = load("mtllib lib.mtl missing.mtl\n" + SQUARE + "usemtl m\nf 1 2 3\nusemtl ghost\nf 1 3 4\n");
@@ -174,8 +187,9 @@ class ObjLoaderTest {
         assertTrue(error(SQUARE + "f 1 2 -5\n").contains(":5: vertex index -5 is out of range"));
         assertTrue(error(SQUARE + "f 0 1 2\n").contains(":5: vertex index 0 is out of range"));
         assertTrue(error(SQUARE + "vt 0 0\nf 1/2 2/1 3/1\n").contains(":6: texture coordinate index 2 is out of range"));
-        assertTrue(error(SQUARE + "f 1 2\n").contains(":5: expected 'f' and at least 3 corners")
-                   || error(SQUARE + "f 1 2\n").contains("at least 3 vertices"));
+        assertTrue(error(SQUARE + "f 1 2\n").contains(":5: a face needs at least 3 vertices, got 2"), error(SQUARE + "f 1 2\n"));
+        assertTrue(error(SQUARE + "vn 0 0 1\nf 1//1 2//2 3//1\n").contains(":6: normal index 2 is out of range"),
+                   error(SQUARE + "vn 0 0 1\nf 1//1 2//2 3//1\n"));
         assertTrue(error("v 1 2 x\n").contains("bad.obj:1: expected 'v x y z' with three numbers, got 'v 1 2 x'"));
         assertTrue(error("v 1 2\n").contains(":1: expected 'v x y z'"));
         assertTrue(error("v 1 nan 2\n").contains(":1: coordinate 'nan' is not a finite number"));
