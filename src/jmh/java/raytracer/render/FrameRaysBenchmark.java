@@ -14,6 +14,7 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import raytracer.accel.Aggregation;
+import raytracer.accel.MeshBVH;
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.core.ViewPlane;
@@ -27,7 +28,8 @@ import raytracer.math.Vec3;
  * The rays of a benchmark frame (scenes/bench-*.yaml, 1 sample per pixel, two point lights),
  * replayed one per operation in the renderer's tile order on one thread: the closest-hit search of
  * each primary ray (with the winner's completion) and the any-hit search of each shadow ray,
- * without shading. This is where the frame's time goes (see README, "Speed").
+ * without shading. This is where the frame's time goes (see README, "Speed"); the set-up prints
+ * how many box tests each kind of ray makes.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
@@ -61,6 +63,9 @@ public class FrameRaysBenchmark {
         shadow = new double[7 * 2 * width * height];
         Ray shadowRay = new Ray();
         Vec3 wi = sr.wi;
+        // box tests by kind of ray: primary to the mesh or elsewhere, shadow from the mesh or elsewhere
+        long[] rays = new long[4];
+        long[] tests = new long[4];
         for (int ty = 0; ty < height; ty += Renderer.TILE_SIZE) {
             for (int tx = 0; tx < width; tx += Renderer.TILE_SIZE) {
                 for (int y = ty; y < Math.min(height, ty + Renderer.TILE_SIZE); y++) {
@@ -68,7 +73,12 @@ public class FrameRaysBenchmark {
                         world.camera().generateRay(vp, x + 0.5, y + 0.5, 0, 0, ray);
                         store(ray, primary, 6 * primaryCount++);
                         sr.depth = 0;
-                        if (!world.hit(ray, sr)) {
+                        long before = sr.boxTests;
+                        boolean hit = world.hit(ray, sr);
+                        int kind = hit && sr.object instanceof MeshBVH ? 0 : 1;
+                        rays[kind]++;
+                        tests[kind] += sr.boxTests - before;
+                        if (!hit) {
                             continue;
                         }
                         // the shadow rays DirectLighting would trace from this hit
@@ -78,12 +88,20 @@ public class FrameRaysBenchmark {
                                 continue;
                             }
                             sr.spawnRay(wi.x, wi.y, wi.z, shadowRay);
+                            long start = sr.boxTests;
+                            world.shadowHit(shadowRay, distance, sr);
+                            rays[kind + 2]++;
+                            tests[kind + 2] += sr.boxTests - start;
                             store(shadowRay, shadow, 7 * shadowCount);
                             shadow[7 * shadowCount++ + 6] = distance;
                         }
                     }
                 }
             }
+        }
+        String[] names = {"primary rays to the mesh", "other primary rays", "shadow rays from the mesh", "other shadow rays"};
+        for (int k = 0; k < 4; k++) {
+            System.out.printf("# %s: %d, %.1f box tests each%n", names[k], rays[k], tests[k] / Math.max(1.0, rays[k]));
         }
     }
 
