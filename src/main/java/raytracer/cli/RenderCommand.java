@@ -214,7 +214,7 @@ public final class RenderCommand implements Callable<Integer> {
         err.printf("stats: prepare (top-level BVH) %.3f s, render %.3f s%n", prepareNanos / 1e9, s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
                    s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
-        err.printf("stats: %.1f bounding-volume tests (BVH nodes visited) per ray, peak heap %.0f MiB%n",
+        err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
                    s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0));
     }
 

@@ -128,7 +128,7 @@ class RenderCommandTest {
         int centre = image.getRGB(32, 32) & 0xff;
         int corner = image.getRGB(1, 1) & 0xff;
         assertTrue(centre > corner + 50, "centre " + centre + " should be brighter than corner " + corner);
-        assertTrue(r.err().contains("bounding-volume tests (BVH nodes visited) per ray") && r.err().contains("peak heap"), r.err());
+        assertTrue(r.err().contains("bounding-volume tests (BVH node boxes examined) per ray") && r.err().contains("peak heap"), r.err());
     }
 
     @Test
@@ -155,7 +155,7 @@ class RenderCommandTest {
             assertEquals(2 * primary + secondary, Long.parseLong(m.group(1)), "total, " + material);
             assertTrue(Double.parseDouble(m.group(5)) > 0, r.err());
             assertTrue(r.err().contains("stats: load scene") && r.err().matches("(?s).*render \\d+\\.\\d{3} s.*"), r.err());
-            assertTrue(r.err().matches("(?s).*stats: [0-9.]+ bounding-volume tests \\(BVH nodes visited\\) per ray, peak heap [1-9]\\d* MiB.*"), r.err());
+            assertTrue(r.err().matches("(?s).*stats: [0-9.]+ bounding-volume tests \\(BVH node boxes examined\\) per ray, peak heap [1-9]\\d* MiB.*"), r.err());
         }
     }
 

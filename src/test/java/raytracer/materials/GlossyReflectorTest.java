@@ -61,7 +61,8 @@ class GlossyReflectorTest {
         double lobe = KS * 2 * Math.PI / (EXP + 2);
         double[] expected = {lobe * CS.r() * LS * GLOW.r(), lobe * CS.g() * LS * GLOW.g(), lobe * CS.b() * LS * GLOW.b()};
         for (int c = 0; c < 3; c++) {
-            // 36,864 glossy rays; the per-ray weight varies with cos(alpha) by a few per cent only
+            // 36,864 glossy rays; the per-ray weight, proportional to cos(alpha), has a standard
+            // deviation of 8% for e = 10, so the mean is good to 0.05%
             assertEquals(expected[c], sum[c] / (SIZE * SIZE), 0.003 * expected[c], "channel " + c);
         }
     }

@@ -69,8 +69,13 @@ final class MtlLoader {
                 case "Ka" -> current.ka = color(value, where, warnings, current.ka);
                 case "Ke" -> current.ke = color(value, where, warnings, current.ke);
                 case "Ns" -> current.ns = scalar(value, where, warnings, current.ns);
-                case "d" -> current.dissolve = scalar(value, where, warnings, current.dissolve);
-                case "Tr" -> current.dissolve = 1 - scalar(value, where, warnings, 1 - current.dissolve);
+                case "d" -> {
+                    current.dissolve = scalar(value, where, warnings, current.dissolve);
+                    current.dissolveGiven = true;
+                }
+                // d wins over Tr whatever their order: some exporters write Tr inverted
+                case "Tr" -> current.dissolve = current.dissolveGiven ? current.dissolve
+                                                 : 1 - scalar(value, where, warnings, 1 - current.dissolve);
                 case "Ni" -> current.ior = scalar(value, where, warnings, current.ior);
                 case "illum" -> current.illum = (int) scalar(value, where, warnings, current.illum);
                 case "map_Kd" -> current.mapKd = texture(file, value, where, warnings);
@@ -134,6 +139,7 @@ final class MtlLoader {
         double[] ke = {0, 0, 0};
         double ns;
         double dissolve = 1;
+        boolean dissolveGiven;
         double ior = 1;
         int illum = 1;
         Path mapKd;

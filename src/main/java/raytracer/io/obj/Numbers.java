@@ -44,8 +44,8 @@ final class Numbers {
             }
         }
         if (i < end) {
-            int exponent = Integer.parseInt(s.subSequence(i + 1, end).toString().replace("+", ""));
-            scale += exponent;
+            // saturated, so that an absurd exponent reaches Double.parseDouble (infinity or 0), not an overflow
+            scale += Math.max(-100_000, Math.min(100_000, parseInt(s, i + 1, end)));
         }
         if (digits > 18 || mantissa >= (1L << 53) || scale < -22 || scale > 22) {
             return Double.parseDouble(s.subSequence(start, end).toString());

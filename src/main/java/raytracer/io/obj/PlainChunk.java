@@ -40,6 +40,14 @@ final class PlainChunk {
     }
 
     static PlainChunk parse(String text) {
+        try {
+            return parsePlain(text);
+        } catch (RuntimeException e) {
+            return GENERAL; // whatever the fast path cannot take, the line-by-line parse reports at its line
+        }
+    }
+
+    private static PlainChunk parsePlain(String text) {
         Parser parser = new Parser(text);
         int lines = 0;
         int start = 0;

@@ -13,12 +13,11 @@ import raytracer.materials.Dielectric;
 import raytracer.materials.Fitted;
 import raytracer.materials.GlossyReflector;
 import raytracer.materials.Matte;
-import raytracer.materials.Reflective;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
 import raytracer.math.RGBColor;
 
-/** One entry of the {@code materials} map: matte, phong or reflective. */
+/** One entry of the {@code materials} map, of any of the types listed in docs/scene-format.md. */
 final class MaterialReader {
     static final double KA = 0.2;
     static final double KD = 0.8;
@@ -26,6 +25,8 @@ final class MaterialReader {
     static final double EXPONENT = 20;
     static final double KR = 0.75;
     static final double IOR = 1.5;
+    /** A dielectric's highlight exponent: a sharp glint, as polished glass shows. */
+    static final double DIELECTRIC_EXPONENT = 1000;
     static final int GLOSSY_SAMPLES = 10;
 
     private MaterialReader() {
@@ -107,7 +108,7 @@ final class MaterialReader {
         }
         if (kind.equals("dielectric")) {
             return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
-                                  m.number("ks", 0, 0, false), m.number("exponent", 1000, 0, true));
+                                  m.number("ks", 0, 0, false), m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
         }
         double ka = m.number("ka", KA, 0, false);
         double kd = m.number("kd", KD, 0, false);

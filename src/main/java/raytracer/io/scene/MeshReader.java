@@ -24,7 +24,7 @@ import raytracer.textures.ImageTexture;
 
 /**
  * A {@code mesh} object: an OBJ file under a BVH. Without a {@code material} key the file's MTL
- * materials are used, mapped onto ours (Kd to a Lambertian, Ks and Ns to a Phong lobe).
+ * materials are used, mapped onto ours by {@link #fromMtl}.
  */
 final class MeshReader {
     /**
@@ -116,9 +116,10 @@ final class MeshReader {
     }
 
     /**
-     * An MTL material onto ours: Ke to a visible emitter; d (or Tr) below 1 to glass of index Ni;
-     * otherwise Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong lobe. An
-     * unreadable map_Kd is a warning.
+     * An MTL material onto ours: Ke to a visible emitter; d (or Tr) below 1 to glass of index Ni,
+     * with a highlight when Ks and Ns are set, and a warning saying so, since partial dissolve is
+     * not blended; otherwise Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong
+     * lobe. An unreadable map_Kd is a warning.
      */
     static Material fromMtl(ObjMaterial m, TextureReader textures, World world) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
@@ -130,7 +131,10 @@ final class MeshReader {
         if (m.dissolve() < 1) {
             // exporters write "Ni 1" whatever the material, and glass of index 1 would be invisible
             double ior = m.ior() > 1 ? m.ior() : MaterialReader.IOR;
-            return new Dielectric(ior, RGBColor.BLACK, ks.max(), Math.max(m.ns(), 1));
+            world.addWarning("material '" + m.name() + "': d " + m.dissolve() + " is read as clear glass of index " + ior
+                             + " (partial transparency is not blended)");
+            boolean lobe = ks.max() > 0 && m.ns() > 0;
+            return new Dielectric(ior, RGBColor.BLACK, lobe ? ks.max() : 0, lobe ? m.ns() : MaterialReader.DIELECTRIC_EXPONENT);
         }
         Texture texture = null;
         if (m.mapKd() != null) {

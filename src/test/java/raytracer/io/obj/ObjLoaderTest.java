@@ -195,6 +195,8 @@ class ObjLoaderTest {
         assertTrue(error("v 1 nan 2\n").contains(":1: coordinate 'nan' is not a finite number"));
         assertTrue(error("v 1 2 inf\n").contains(":1: coordinate 'inf' is not a finite number"));
         assertTrue(error("v 1 2 1e400\n").contains(":1: coordinate '1e400' is not a finite number"));
+        assertTrue(error("v 1 2 1e99999999999\n").contains(":1: coordinate '1e99999999999' is not a finite number"),
+                   error("v 1 2 1e99999999999\n"));
         assertTrue(error("vn 0 0\n").contains(":1: expected 'vn x y z'"));
         assertTrue(error(SQUARE + "f 1 a 3\n").contains(":5: expected 'f'"));
         assertTrue(error("").contains("no faces"));

@@ -43,9 +43,11 @@ class MeshReaderTest {
             "newmtl window", "Kd 1 1 1", "d 0.2", "Ni 1",
             "newmtl water", "Tr 0.9", "Ni 1.33",
             "newmtl lamp", "Kd 1 1 1", "Ke 4 3 2",
-            "newmtl unlit-shine", "Ks 1 1 1", ""));
+            "newmtl unlit-shine", "Ks 1 1 1",
+            "newmtl opaque-tr", "Tr 0",
+            "newmtl d-wins", "d 1", "Tr 0.9", ""));
         StringBuilder obj = new StringBuilder("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
-        for (String name : List.of("chalk", "plastic", "window", "water", "lamp", "unlit-shine")) {
+        for (String name : List.of("chalk", "plastic", "window", "water", "lamp", "unlit-shine", "opaque-tr", "d-wins")) {
             obj.append("usemtl ").append(name).append("\nf 1 2 3\n"); // the loader keeps the materials faces use
         }
         Files.writeString(dir.resolve("m.obj"), obj);
@@ -56,13 +58,15 @@ class MeshReaderTest {
         for (int i = 0; i < m.length; i++) {
             m[i] = MeshReader.fromMtl(mtl.get(i), textures, world);
         }
-        assertEquals(6, m.length, mtl.toString());
+        assertEquals(8, m.length, mtl.toString());
         assertInstanceOf(Matte.class, m[0]);
         assertInstanceOf(Phong.class, m[1], "Ks with Ns adds a Phong lobe");
         assertEquals(1.5, assertInstanceOf(Dielectric.class, m[2]).ior(), 0, "d < 1 with the exporters' default Ni 1 is glass");
         assertEquals(1.33, assertInstanceOf(Dielectric.class, m[3]).ior(), 0, "Tr is 1 - d");
         assertInstanceOf(Emissive.class, m[4]);
         assertInstanceOf(Matte.class, m[5], "Ks without Ns has no lobe to shape");
+        assertInstanceOf(Matte.class, m[6], "Tr 0 is opaque");
+        assertInstanceOf(Matte.class, m[7], "d wins over Tr, whatever their order");
 
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         Rgb out = new Rgb();
@@ -74,7 +78,9 @@ class MeshReaderTest {
         sr.frontFace = false;
         m[4].shade(sr, out);
         assertEquals(0, out.r + out.g + out.b, 0, "an emitter is dark from behind");
-        assertTrue(world.warnings().isEmpty(), world.warnings().toString());
+        assertEquals(2, world.warnings().size(), "each glass reading is announced: " + world.warnings());
+        assertTrue(world.warnings().get(0).contains("'window'") && world.warnings().get(0).contains("glass of index 1.5"),
+                   world.warnings().get(0));
     }
 
     @Test
@@ -91,8 +97,18 @@ class MeshReaderTest {
         assertEquals(2 * 204 / 255.0 - 1, mapped.x, 0.01);
         assertEquals(0, mapped.y, 0.01);
         assertEquals(2 * 230 / 255.0 - 1, mapped.z, 0.01);
+        Vec3 tangent = normalAtCentre(dir, "normal-map: {file: n.png, space: tangent}");
+        // with u along +x and v along +y the tangent frame is the object frame here
+        assertEquals(mapped.x, tangent.x, 1e-6);
+        assertEquals(mapped.z, tangent.z, 1e-6);
+
+        // the same quad with an MTL whose norm map is the same picture: read as tangent space
+        Files.writeString(dir.resolve("quad.mtl"), "newmtl bumpy\nKd 0.5 0.5 0.5\nnorm n.png\n");
+        Files.writeString(dir.resolve("quad.obj"), "mtllib quad.mtl\nusemtl bumpy\n" + Files.readString(dir.resolve("quad.obj")));
+        Vec3 fromMtl = normalAtCentre(dir, "smooth: false");
+        assertEquals(mapped.x, fromMtl.x, 1e-6, "the MTL's norm map applies without a normal-map key");
         Vec3 plain = normalAtCentre(dir, "normal-map: none");
-        assertEquals(1, plain.z, 1e-12, "no map: the face normal");
+        assertEquals(1, plain.z, 1e-12, "none: not even the MTL's map, the face normal");
 
         String[][] bad = {
             {"normal-map: {file: n.png, space: world}", "unknown normal-map space 'world'; allowed: object, tangent"},
