@@ -160,6 +160,27 @@ class RenderCommandTest {
     }
 
     @Test
+    void theSpotSceneRendersFromTheRepositoryAlone() throws IOException {
+        // scenes/spot.yaml reads assets/spot: a quad mesh, its .obj.mtl and map_Kd texture
+        Path out = dir.resolve("spot.png");
+        Result r = run("scenes/spot.yaml", "-o", out.toString(), "-W", "80", "-H", "60", "--spp", "1");
+        assertEquals(0, r.code(), r.err());
+        assertFalse(r.err().toLowerCase(java.util.Locale.ROOT).contains("warning"), r.err());
+        BufferedImage image = ImageIO.read(out.toFile());
+        int brown = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                int red = rgb >> 16 & 0xff;
+                int blue = rgb & 0xff;
+                brown += red >= blue + 15 ? 1 : 0; // the neutral floor reaches 10 at most
+            }
+        }
+        // the grey floor, the blue sky and an untextured white cow have none; the muzzle and horns do
+        assertTrue(brown > 40, "pixels of the texture's brown: " + brown);
+    }
+
+    @Test
     void missingSceneFile() {
         assertOneLineError(run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString()), "nope.yaml");
     }
