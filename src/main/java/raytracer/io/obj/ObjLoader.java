@@ -162,6 +162,10 @@ public final class ObjLoader {
             }
             parseLine(line);
         }
+        if (continued != null) {
+            // a backslash on the file's last line continues into nothing: the line ends there
+            parseLine(continued.toString());
+        }
     }
 
     private void parseLine(String text) throws ObjException {

@@ -125,6 +125,15 @@ class ObjLoaderTest {
     }
 
     @Test
+    void aBackslashOnTheLastLineEndsIt() throws Exception {
+        for (String end : new String[] {"f 1 2 3 \\", "f 1 2 \\\n3 \\", "f 1 2 3 \\\n"}) {
+            ObjModel m = load(SQUARE + end);
+            assertEquals(1, m.mesh().triangleCount(), end);
+            assertEquals(2, m.mesh().vertex(0, 2), end);
+        }
+    }
+
+    @Test
     void bumpAndNormAreNamesForTheNormalMap() throws Exception {
         Files.write(dir.resolve("n.png"), new byte[] {1});
         write("lib.mtl", "newmtl a\nbump n.png\nnewmtl b\nnorm n.png\nnewmtl c\nmap_bump -bm 2 n.png\n");
