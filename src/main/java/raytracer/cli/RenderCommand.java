@@ -9,6 +9,7 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -17,6 +18,8 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
+import raytracer.accel.ObjectBVH;
+import raytracer.core.GeometricObject;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -132,11 +135,24 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        try {
+            return render();
+        } catch (OutOfMemoryError e) {
+            // the film and the scene are unreachable now, so there is memory to say so
+            throw new IllegalStateException("out of memory for this scene and image size; give Java more heap, e.g. "
+                                            + "java -Xmx8g -jar render.jar ... (now at most "
+                                            + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB)", e);
+        }
+    }
+
+    private int render() throws Exception {
         validateOptions();
         Path out = output != null ? output : Path.of(defaultOutputName());
         checkWritable(out);
-        Aggregation.Mode accelMode = Aggregation.Mode.parse(accel);
-        boolean costView = parseView();
+        Aggregation.Mode accelMode = usage(() -> Aggregation.Mode.parse(accel));
+        boolean costView = usage(this::parseView);
+        ShadingPass shadingPass = pass == null ? null : usage(() -> ShadingPass.parse(pass));
+        Boolean linear = encoding == null ? null : usage(this::parseEncoding);
         long loadStart = System.nanoTime();
         World world = loadScene();
         long loadNanos = System.nanoTime() - loadStart;
@@ -144,21 +160,22 @@ public final class RenderCommand implements Callable<Integer> {
             world.warnings().forEach(w -> spec.commandLine().getErr().println("render: warning: " + w));
         }
         applyOverrides(world);
-        if (pass != null) {
-            world.setPass(ShadingPass.parse(pass));
+        if (shadingPass != null) {
+            world.setPass(shadingPass);
         }
         if (cutoff != null) {
             world.setCutoff(cutoff);
         }
-        if (encoding != null) {
-            switch (encoding) {
-                case "srgb" -> world.setLinearDisplay(false);
-                case "linear" -> world.setLinearDisplay(true);
-                default -> throw new IllegalArgumentException("unknown --encoding '" + encoding + "'; allowed: linear, srgb");
-            }
+        if (linear != null) {
+            world.setLinearDisplay(linear);
         }
         long prepareStart = System.nanoTime();
-        world.prepare(objects -> Aggregation.organize(objects, accelMode));
+        boolean[] topLevelBvh = {false};
+        world.prepare(objects -> {
+            List<GeometricObject> organized = Aggregation.organize(objects, accelMode);
+            topLevelBvh[0] = organized.stream().anyMatch(o -> o instanceof ObjectBVH);
+            return organized;
+        });
         long prepareNanos = System.nanoTime() - prepareStart;
         if (costView) {
             world.setTracer(BvhCost::new);
@@ -168,7 +185,7 @@ public final class RenderCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         for (int i = 1; i < repeat; i++) {
             RenderStats warmup = new Renderer(world, threads, seed).render(new Film(vp.hres(), vp.vres()));
-            err.printf("render %d of %d: %.3f s, %.2f M rays/s%n", i, repeat, warmup.seconds(), warmup.raysPerSecond() / 1e6);
+            printRepeat(err, i, warmup);
         }
         Renderer renderer = new Renderer(world, threads, seed);
         Film film = new Film(vp.hres(), vp.vres());
@@ -183,20 +200,47 @@ public final class RenderCommand implements Callable<Integer> {
         } else {
             stats = renderer.render(film);
         }
+        if (repeat > 1) {
+            printRepeat(err, repeat, stats);
+        }
         if (costView) {
+            // the film holds each pixel's mean over its samples
             double[] range = FalseColor.range(film);
             film = FalseColor.apply(film, range[0], range[1]);
-            err.printf("bvh-cost: %.0f to %.0f bounding-volume tests per pixel (black to white)%n",
-                       range[0] / vp.numSamples(), range[1] / vp.numSamples());
+            // printed even with --quiet: it is the image's legend
+            String format = vp.numSamples() == 1 ? "%.0f" : "%.1f";
+            err.printf("bvh-cost: " + format + " to " + format + " bounding-volume tests per %s (black to white)%n",
+                       range[0], range[1], vp.numSamples() == 1 ? "pixel" : "ray, averaged over each pixel");
         }
         ImageWriters.write(film, costView ? 1 : vp.exposure(), costView || !world.linearDisplay(), out);
         if (!quiet) {
             err.println(summary(stats, out));
         }
         if (this.stats) {
-            printStats(err, world, loadNanos, prepareNanos, stats);
+            printStats(err, world, loadNanos, prepareNanos, topLevelBvh[0], stats);
         }
         return 0;
+    }
+
+    private void printRepeat(PrintWriter err, int i, RenderStats s) {
+        err.printf("render %d of %d: %.3f s, %.2f M rays/s%n", i, repeat, s.seconds(), s.raysPerSecond() / 1e6);
+    }
+
+    private boolean parseEncoding() {
+        return switch (encoding) {
+            case "srgb" -> false;
+            case "linear" -> true;
+            default -> throw new IllegalArgumentException("unknown --encoding '" + encoding + "'; allowed: linear, srgb");
+        };
+    }
+
+    /** Runs an option's parser, turning its complaint into a usage error (exit code 2). */
+    private <T> T usage(java.util.function.Supplier<T> parse) {
+        try {
+            return parse.get();
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
     }
 
     private boolean parseView() {
@@ -207,11 +251,13 @@ public final class RenderCommand implements Callable<Integer> {
         };
     }
 
-    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, RenderStats s) {
+    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, boolean topLevelBvh,
+                                   RenderStats s) {
         err.printf("stats: load scene %.3f s", loadNanos / 1e9);
         world.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
         err.println();
-        err.printf("stats: prepare (top-level BVH) %.3f s, render %.3f s%n", prepareNanos / 1e9, s.seconds());
+        err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
+                   prepareNanos / 1e9, s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
                    s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
         err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
@@ -229,6 +275,7 @@ public final class RenderCommand implements Callable<Integer> {
         return peak;
     }
 
+    /** Option values picocli's types cannot check: a bad one is a usage error (exit code 2). */
     private void validateOptions() {
         requireAtLeast("--width", width, 1);
         requireAtLeast("--height", height, 1);
@@ -236,11 +283,18 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--max-depth", maxDepth, 0);
         requireAtLeast("--threads", threads, 1);
         requireAtLeast("--repeat", repeat, 1);
+        if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--cutoff must be in [0, 1), got " + cutoff);
+        }
+        if (width != null && height != null && (long) width * height > Film.MAX_PIXELS) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--width x --height is " + (long) width * height
+                                                     + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
+        }
     }
 
-    private static void requireAtLeast(String option, Integer value, int min) {
+    private void requireAtLeast(String option, Integer value, int min) {
         if (value != null && value < min) {
-            throw new IllegalArgumentException(option + " must be at least " + min + ", got " + value);
+            throw new CommandLine.ParameterException(spec.commandLine(), option + " must be at least " + min + ", got " + value);
         }
     }
 
@@ -255,6 +309,10 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** Fails before rendering, not after, when the image could not be written. */
     private static void checkWritable(Path out) throws IOException {
+        if (Files.isDirectory(out)) {
+            throw new IOException("cannot write " + out + ": it is a directory; give a file name ending in one of "
+                                  + String.join(", ", ImageWriters.EXTENSIONS));
+        }
         if (!ImageWriters.isSupported(out)) {
             throw new IOException("cannot write " + out + ": unsupported extension (use one of "
                                   + String.join(", ", ImageWriters.EXTENSIONS) + ")");

@@ -2,9 +2,12 @@ package raytracer.image;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
@@ -29,6 +32,18 @@ public final class AtomicFile {
     }
 
     public static void write(Path target, Body body) throws IOException {
+        try {
+            writeThroughTemp(target, body);
+        } catch (FileSystemException e) {
+            // the bare exception names only the temporary file; say which file and why
+            String reason = e instanceof NoSuchFileException ? "no such file or directory"
+                            : e instanceof AccessDeniedException ? "permission denied"
+                            : e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
+            throw new IOException("cannot write " + target + ": " + reason, e);
+        }
+    }
+
+    private static void writeThroughTemp(Path target, Body body) throws IOException {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
         Path temp = null;

@@ -9,7 +9,14 @@ public final class Film {
     private final int height;
     private final float[] rgb;
 
+    /** The most pixels one film holds: three floats each in one Java array. */
+    public static final long MAX_PIXELS = (Integer.MAX_VALUE - 8) / 3;
+
     public Film(int width, int height) {
+        if (width < 1 || height < 1 || (long) width * height > MAX_PIXELS) {
+            throw new IllegalArgumentException("an image of " + width + " x " + height + " pixels is not possible: it needs 1 to "
+                                               + MAX_PIXELS + " pixels");
+        }
         this.width = width;
         this.height = height;
         this.rgb = new float[3 * width * height];

@@ -155,6 +155,7 @@ class RenderCommandTest {
             assertEquals(2 * primary + secondary, Long.parseLong(m.group(1)), "total, " + material);
             assertTrue(Double.parseDouble(m.group(5)) > 0, r.err());
             assertTrue(r.err().contains("stats: load scene") && r.err().matches("(?s).*render \\d+\\.\\d{3} s.*"), r.err());
+            assertTrue(r.err().contains("prepare (objects in a list)"), "one plane needs no BVH: " + r.err());
             assertTrue(r.err().matches("(?s).*stats: [0-9.]+ bounding-volume tests \\(BVH node boxes examined\\) per ray, peak heap [1-9]\\d* MiB.*"), r.err());
         }
     }
@@ -178,6 +179,31 @@ class RenderCommandTest {
         }
         // the grey floor, the blue sky and an untextured white cow have none; the muzzle and horns do
         assertTrue(brown > 40, "pixels of the texture's brown: " + brown);
+    }
+
+    @Test
+    void bvhCostRangeIsPerRayWhateverTheSamplesAndRepeatsAreLabelled() throws IOException {
+        StringBuilder spheres = new StringBuilder("image: {width: 48, height: 32, samples: 1}\nobjects:\n");
+        for (int i = 0; i < 40; i++) {
+            spheres.append("  - {type: sphere, center: [").append(i % 8 - 3.5).append(", ").append(i / 8 - 2)
+                   .append(", 0], radius: 0.4}\n");
+        }
+        Path s = scene("spheres.yaml", spheres.toString());
+        double[] max = new double[2];
+        String[] spp = {"1", "4"};
+        for (int k = 0; k < 2; k++) {
+            Result r = run(s.toString(), "-o", dir.resolve("c" + k + ".png").toString(), "--view", "bvh-cost", "--spp", spp[k],
+                           "--stats", "--repeat", "2", "-q");
+            assertEquals(0, r.code(), r.err());
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("bvh-cost: ([0-9.]+) to ([0-9.]+) bounding-volume tests").matcher(r.err());
+            assertTrue(m.find(), "the legend is printed even with -q: " + r.err());
+            max[k] = Double.parseDouble(m.group(2));
+            assertTrue(r.err().contains("render 1 of 2:") && r.err().contains("render 2 of 2:"), r.err());
+            assertTrue(r.err().contains("prepare (top-level BVH)"), r.err());
+        }
+        // 40 spheres need a handful of box tests per ray, averaged over 1 or 4 samples alike
+        assertTrue(max[0] > 5, "range with 1 sample: " + max[0]);
+        assertTrue(max[1] > 0.5 * max[0] && max[1] <= max[0], "range with 4 samples: " + max[1] + " against " + max[0]);
     }
 
     @Test
@@ -224,13 +250,22 @@ class RenderCommandTest {
     @Test
     void outOfRangeOptions() {
         String out = dir.resolve("a.png").toString();
-        assertOneLineError(run("-o", out, "--width", "0"), "--width");
-        assertOneLineError(run("-o", out, "--height", "-3"), "--height");
-        assertOneLineError(run("-o", out, "--spp", "0"), "--spp");
-        assertOneLineError(run("-o", out, "--threads", "0"), "--threads");
-        assertOneLineError(run("-o", out, "--max-depth", "-1"), "--max-depth");
-        assertOneLineError(run("-o", out, "--spp", "many"), "many");
-        assertOneLineError(run("-o", out, "--frobnicate"), "frobnicate");
+        // every bad option value is a usage error: exit code 2 and a pointer to --help
+        String[][] cases = {
+            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--max-depth", "-1"},
+            {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
+            {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--frobnicate", "1"},
+        };
+        for (String[] c : cases) {
+            Result r = run("-o", out, c[0], c[1]);
+            assertOneLineError(r, c[0].equals("--frobnicate") ? "frobnicate" : c[0].equals("--spp") && c[1].equals("many") ? "many" : c[1]);
+            assertEquals(2, r.code(), String.join(" ", c) + ": " + r.err());
+            assertTrue(r.err().contains("(see render --help)"), r.err());
+        }
+        Result huge = run("-o", out, "--width", "50000", "--height", "50000");
+        assertOneLineError(huge, "2500000000 pixels", "more than one image holds");
+        assertEquals(2, huge.code());
+        assertFalse(Files.exists(dir.resolve("a.png")), "nothing written");
     }
 
     @Test
@@ -239,7 +274,7 @@ class RenderCommandTest {
         assertOneLineError(run("-o", file.resolve("out.png").toString()), "does not exist");
         assertOneLineError(run("-o", dir.resolve("missing/out.png").toString()), "does not exist");
         assertOneLineError(run("-o", dir.resolve("out.jpg").toString()), "unsupported", ".png");
-        assertOneLineError(run("-o", dir.toString()), "unsupported");
+        assertOneLineError(run("-o", dir.toString()), "it is a directory", ".png");
     }
 
     @Test

@@ -34,6 +34,13 @@ class AtomicFileTest {
     }
 
     @Test
+    void aFileSystemRefusalNamesTheTargetNotTheTemporary() {
+        Path target = dir.resolve("gone/image.png");
+        IOException e = assertThrows(IOException.class, () -> AtomicFile.write(target, out -> out.write(1)));
+        assertEquals("cannot write " + target + ": no such file or directory", e.getMessage());
+    }
+
+    @Test
     void aSuccessfulWriteReplacesTheFile() throws IOException {
         Path target = dir.resolve("image.png");
         Files.write(target, new byte[] {9, 9});
