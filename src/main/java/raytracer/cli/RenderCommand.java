@@ -9,8 +9,8 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -19,7 +19,6 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
 import raytracer.accel.ObjectBVH;
-import raytracer.core.GeometricObject;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -170,12 +169,7 @@ public final class RenderCommand implements Callable<Integer> {
             world.setLinearDisplay(linear);
         }
         long prepareStart = System.nanoTime();
-        boolean[] topLevelBvh = {false};
-        world.prepare(objects -> {
-            List<GeometricObject> organized = Aggregation.organize(objects, accelMode);
-            topLevelBvh[0] = organized.stream().anyMatch(o -> o instanceof ObjectBVH);
-            return organized;
-        });
+        world.prepare(objects -> Aggregation.organize(objects, accelMode));
         long prepareNanos = System.nanoTime() - prepareStart;
         if (costView) {
             world.setTracer(BvhCost::new);
@@ -217,7 +211,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(summary(stats, out));
         }
         if (this.stats) {
-            printStats(err, world, loadNanos, prepareNanos, topLevelBvh[0], stats);
+            printStats(err, world, loadNanos, prepareNanos, stats);
         }
         return 0;
     }
@@ -235,7 +229,7 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /** Runs an option's parser, turning its complaint into a usage error (exit code 2). */
-    private <T> T usage(java.util.function.Supplier<T> parse) {
+    private <T> T usage(Supplier<T> parse) {
         try {
             return parse.get();
         } catch (IllegalArgumentException e) {
@@ -251,11 +245,11 @@ public final class RenderCommand implements Callable<Integer> {
         };
     }
 
-    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, boolean topLevelBvh,
-                                   RenderStats s) {
+    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, RenderStats s) {
         err.printf("stats: load scene %.3f s", loadNanos / 1e9);
         world.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
         err.println();
+        boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
         err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
                    prepareNanos / 1e9, s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",

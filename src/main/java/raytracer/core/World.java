@@ -193,4 +193,9 @@ public final class World {
     public List<GeometricObject> objects() {
         return List.copyOf(objectList);
     }
+
+    /** What {@link #hit} searches since {@link #prepare}: the objects as the organizer grouped them. */
+    public List<GeometricObject> searched() {
+        return List.of(objects);
+    }
 }
