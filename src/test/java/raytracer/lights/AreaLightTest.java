@@ -47,6 +47,11 @@ class AreaLightTest {
         world.prepare();
         Film film = new Film(SIZE, SIZE);
         new Renderer(world, 2, 7).render(film);
+        return meanAndError(film);
+    }
+
+    /** Mean and standard error of the red channel over the film's pixels. */
+    private static double[] meanAndError(Film film) {
         double sum = 0;
         double sum2 = 0;
         for (int y = 0; y < SIZE; y++) {
@@ -58,8 +63,7 @@ class AreaLightTest {
         }
         int n = SIZE * SIZE;
         double mean = sum / n;
-        double variance = Math.max(0, sum2 / n - mean * mean);
-        return new double[] {mean, Math.sqrt(variance / n)};
+        return new double[] {mean, Math.sqrt(Math.max(0, sum2 / n - mean * mean) / n)};
     }
 
     @ParameterizedTest
@@ -190,18 +194,9 @@ class AreaLightTest {
             Film film = new Film(SIZE, SIZE);
             RenderStats stats = new Renderer(world, 2, 7).render(film);
             shadowRays[k] = stats.shadowRays();
-            double sum = 0;
-            double sum2 = 0;
-            for (int y = 0; y < SIZE; y++) {
-                for (int x = 0; x < SIZE; x++) {
-                    double v = film.get(x, y, 0);
-                    sum += v;
-                    sum2 += v * v;
-                }
-            }
-            int n = SIZE * SIZE;
-            double mean = sum / n;
-            double error = Math.sqrt(Math.max(0, sum2 / n - mean * mean) / n);
+            double[] estimate = meanAndError(film);
+            double mean = estimate[0];
+            double error = estimate[1];
             assertEquals(expected, mean, 4 * error + 1e-6, "cutoff " + cutoffs[k] + ": mean " + mean + " +- " + error);
         }
         assertEquals(16L * SIZE * SIZE, shadowRays[0]);
