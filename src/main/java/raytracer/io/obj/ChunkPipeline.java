@@ -20,7 +20,7 @@ import java.util.concurrent.Future;
 final class ChunkPipeline {
     /** Takes a chunk's text and its plain parse, in file order. */
     interface Merge {
-        void append(String text, PlainChunk chunk) throws ObjException;
+        void append(Decoding.Text text, PlainChunk chunk) throws ObjException;
     }
 
     private ChunkPipeline() {
@@ -31,11 +31,11 @@ final class ChunkPipeline {
      * their results in file order. A file of one chunk is parsed on this thread alone.
      */
     static void run(LineChunks chunks, Merge merge) throws IOException, ObjException {
-        String first = chunks.next();
-        String second = first != null ? chunks.next() : null;
+        Decoding.Text first = chunks.next();
+        Decoding.Text second = first != null ? chunks.next() : null;
         if (second == null) {
             if (first != null) {
-                merge.append(first, PlainChunk.parse(first));
+                merge.append(first, PlainChunk.parse(first.text()));
             }
             return;
         }
@@ -45,18 +45,18 @@ final class ChunkPipeline {
             t.setDaemon(true);
             return t;
         });
-        Deque<Map.Entry<String, Future<PlainChunk>>> inFlight = new ArrayDeque<>();
+        Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight = new ArrayDeque<>();
         try {
-            inFlight.add(Map.entry(first, pool.submit(() -> PlainChunk.parse(first))));
-            inFlight.add(Map.entry(second, pool.submit(() -> PlainChunk.parse(second))));
-            String text;
+            inFlight.add(Map.entry(first, pool.submit(() -> PlainChunk.parse(first.text()))));
+            inFlight.add(Map.entry(second, pool.submit(() -> PlainChunk.parse(second.text()))));
+            Decoding.Text text;
             while ((text = nextChunk(chunks, inFlight, merge)) != null) {
                 // a few chunks ahead keep the workers busy; more would only hold text in memory
                 while (inFlight.size() > 2 * workers + 2) {
                     mergeOldest(inFlight, merge);
                 }
-                String chunk = text;
-                inFlight.add(Map.entry(chunk, pool.submit(() -> PlainChunk.parse(chunk))));
+                Decoding.Text chunk = text;
+                inFlight.add(Map.entry(chunk, pool.submit(() -> PlainChunk.parse(chunk.text()))));
             }
             while (!inFlight.isEmpty()) {
                 mergeOldest(inFlight, merge);
@@ -67,7 +67,7 @@ final class ChunkPipeline {
     }
 
     /** The next chunk; when the stream fails, the chunks read before it come first, with their errors. */
-    private static String nextChunk(LineChunks chunks, Deque<Map.Entry<String, Future<PlainChunk>>> inFlight,
+    private static Decoding.Text nextChunk(LineChunks chunks, Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight,
                                     Merge merge)
             throws IOException, ObjException {
         try {
@@ -80,9 +80,9 @@ final class ChunkPipeline {
         }
     }
 
-    private static void mergeOldest(Deque<Map.Entry<String, Future<PlainChunk>>> inFlight, Merge merge)
+    private static void mergeOldest(Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight, Merge merge)
             throws IOException, ObjException {
-        Map.Entry<String, Future<PlainChunk>> oldest = inFlight.remove();
+        Map.Entry<Decoding.Text, Future<PlainChunk>> oldest = inFlight.remove();
         try {
             merge.append(oldest.getKey(), oldest.getValue().get());
         } catch (InterruptedException e) {

@@ -1,11 +1,10 @@
 package raytracer.io.obj;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -15,94 +14,109 @@ import java.util.regex.Pattern;
 
 /**
  * Reads an MTL library: {@code newmtl} blocks with Kd, Ks, Ka, Ke, Ns, d / Tr, Ni, illum, map_Kd and
- * map_Bump / bump / norm (map options such as {@code -bm 0.5} before the file name are read or
- * skipped). Unknown keys and missing texture files become warnings, never failures.
+ * map_Bump / bump / norm (texture options, before or after the file name, are read or skipped:
+ * {@link TextureMap}). Unknown keys, values that are not numbers, missing texture files and bytes
+ * that are not UTF-8 become warnings, never failures.
  */
 final class MtlLoader {
-    private static final Pattern LINE = Pattern.compile("\\s*(\\S+)(?:\\s+(.*?))?\\s*");
+    /** Far more than any material library; a path to something else is refused before it is read. */
+    static final long MAX_BYTES = 64L << 20;
+    private static final Pattern LINE = Pattern.compile("\\s*([^\\s#]\\S*)(?:\\s+(.*?))?\\s*");
     private static final Pattern COLOR = Pattern.compile("(" + ObjLoader.NUMBER + ")(?:\\s+(" + ObjLoader.NUMBER + ")\\s+(" + ObjLoader.NUMBER + "))?");
     private static final Pattern SCALAR = Pattern.compile(ObjLoader.NUMBER);
-    /** Map options: a dash-word followed by its numeric arguments, then the file name. */
-    private static final Pattern MAP = Pattern.compile("((?:-\\w+(?:\\s+" + ObjLoader.NUMBER + ")*\\s+)*)(.+)");
-    private static final Pattern BUMP_SCALE = Pattern.compile("-bm\\s+(" + ObjLoader.NUMBER + ")");
-    private static final Set<String> IGNORED = Set.of("Tf", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor",
-        "map_Ka", "map_Ks", "map_Ns", "map_d", "map_Pr", "map_Pm", "disp", "decal", "refl", "sharpness", "Tr_", "Kt");
+    private static final Set<String> KNOWN = Set.of("Kd", "Ks", "Ka", "Ke", "Ns", "d", "Tr", "Ni", "illum", "map_Kd",
+        "map_Bump", "map_bump", "bump", "norm");
+    /** Keys of the specification and of common extensions (PBR) that these materials do not use. */
+    private static final Set<String> IGNORED = Set.of("Tf", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor", "Km",
+        "map_Ka", "map_Ks", "map_Ke", "map_Ns", "map_d", "map_Tr", "map_Pr", "map_Pm", "map_Ps", "map_aniso", "map_refl",
+        "disp", "decal", "refl", "sharpness", "Tr_", "Kt");
 
     private MtlLoader() {
     }
 
     static Map<String, ObjMaterial> load(Path file, List<String> warnings) throws ObjException {
-        List<String> lines;
-        try {
-            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new ObjException("material library " + file + " is missing");
-        } catch (IOException e) {
-            throw new ObjException("cannot read material library " + file + ": " + e.getMessage());
+        Decoding.Text decoded = read(file);
+        FileWarnings warn = new FileWarnings(file.toString(), warnings);
+        if (decoded.latin1From() >= 0) {
+            warn.add(decoded.latin1Line() + 1, "a byte that is not UTF-8; the file is read as ISO-8859-1 (Latin-1)");
         }
+        List<String> lines = decoded.text().lines().toList();
         Map<String, ObjMaterial> result = new LinkedHashMap<>();
         Builder current = null;
-        Set<String> warned = new HashSet<>();
         Matcher line = LINE.matcher("");
         for (int i = 0; i < lines.size(); i++) {
-            String text = lines.get(i);
-            if (text.isBlank() || text.strip().startsWith("#") || !line.reset(text).matches()) {
-                continue;
+            if (!line.reset(lines.get(i)).matches()) {
+                continue; // blank or comment
             }
             String key = line.group(1);
-            String value = line.group(2) == null ? "" : line.group(2);
-            String where = file + ":" + (i + 1);
+            String value = Arguments.withoutComment(line.group(2) == null ? "" : line.group(2));
+            int at = i + 1;
             if (key.equals("newmtl")) {
                 if (current != null) {
                     result.put(current.name, current.build());
                 }
                 current = new Builder(value);
-                continue;
-            }
-            if (current == null) {
-                warnings.add(where + ": '" + key + "' before any newmtl ignored");
-                continue;
-            }
-            switch (key) {
-                case "Kd" -> current.kd = color(value, where, warnings, current.kd);
-                case "Ks" -> current.ks = color(value, where, warnings, current.ks);
-                case "Ka" -> current.ka = color(value, where, warnings, current.ka);
-                case "Ke" -> current.ke = color(value, where, warnings, current.ke);
-                case "Ns" -> current.ns = scalar(value, where, warnings, current.ns);
-                case "d" -> {
-                    current.dissolve = scalar(value, where, warnings, current.dissolve);
-                    current.dissolveGiven = true;
-                }
-                // d wins over Tr whatever their order: some exporters write Tr inverted
-                case "Tr" -> current.dissolve = current.dissolveGiven ? current.dissolve
-                                                 : 1 - scalar(value, where, warnings, 1 - current.dissolve);
-                case "Ni" -> current.ior = scalar(value, where, warnings, current.ior);
-                case "illum" -> current.illum = (int) scalar(value, where, warnings, current.illum);
-                case "map_Kd" -> current.mapKd = texture(file, value, where, warnings);
-                case "map_Bump", "map_bump", "bump", "norm" -> {
-                    current.mapBump = texture(file, value, where, warnings);
-                    Matcher bm = BUMP_SCALE.matcher(value);
-                    if (bm.find()) {
-                        current.bumpScale = Double.parseDouble(bm.group(1));
-                    }
-                }
-                default -> {
-                    if (!IGNORED.contains(key) && warned.add(key)) {
-                        warnings.add(where + ": unknown material key '" + key + "' ignored (reported once)");
-                    }
-                }
+            } else if (!KNOWN.contains(key) && !IGNORED.contains(key)) {
+                warn.unknownKeyword(at, key);
+            } else if (current == null) {
+                warn.tally("before newmtl", at, n -> (n == 1 ? "a statement" : n + " statements") + " before the first newmtl ignored");
+            } else {
+                read(current, key, value, file, at, warn);
             }
         }
         if (current != null) {
             result.put(current.name, current.build());
         }
+        warn.finish();
         return result;
     }
 
-    private static double[] color(String value, String where, List<String> warnings, double[] fallback) {
+    /** The library's text without a byte-order mark, decoded as {@link Decoding} says. */
+    private static Decoding.Text read(Path file) throws ObjException {
+        try {
+            if (Files.exists(file) && (!Files.isRegularFile(file) || Files.size(file) > MAX_BYTES)) {
+                throw new ObjException("material library " + file + " is not a file of at most " + (MAX_BYTES >> 20) + " MiB");
+            }
+            byte[] bytes = Files.readAllBytes(file);
+            return Decoding.decode(bytes, Decoding.byteOrderMark(bytes, bytes.length), bytes.length);
+        } catch (NoSuchFileException e) {
+            throw new ObjException("material library " + file + " is missing");
+        } catch (IOException e) {
+            throw new ObjException("cannot read material library " + file + ": " + e.getMessage());
+        }
+    }
+
+    private static void read(Builder m, String key, String value, Path file, int at, FileWarnings warn) {
+        switch (key) {
+            case "Kd" -> m.kd = color(value, at, warn, m.kd);
+            case "Ks" -> m.ks = color(value, at, warn, m.ks);
+            case "Ka" -> m.ka = color(value, at, warn, m.ka);
+            case "Ke" -> m.ke = color(value, at, warn, m.ke);
+            case "Ns" -> m.ns = scalar(value, at, warn, m.ns);
+            case "d" -> {
+                m.dissolve = scalar(value, at, warn, m.dissolve);
+                m.dissolveGiven = true;
+            }
+            // d wins over Tr whatever their order: some exporters write Tr inverted
+            case "Tr" -> m.dissolve = m.dissolveGiven ? m.dissolve : 1 - scalar(value, at, warn, 1 - m.dissolve);
+            case "Ni" -> m.ior = scalar(value, at, warn, m.ior);
+            case "illum" -> m.illum = (int) scalar(value, at, warn, m.illum);
+            case "map_Kd" -> m.mapKd = texture(file, TextureMap.parse(value), at, warn);
+            case "map_Bump", "map_bump", "bump", "norm" -> {
+                TextureMap map = TextureMap.parse(value);
+                m.mapBump = texture(file, map, at, warn);
+                m.bumpScale = map.bumpScale();
+            }
+            default -> {
+                // a key of the specification these materials do not use
+            }
+        }
+    }
+
+    private static double[] color(String value, int at, FileWarnings warn, double[] fallback) {
         Matcher m = COLOR.matcher(value);
         if (!m.matches()) {
-            warnings.add(where + ": expected a colour 'r g b', got '" + value + "'; kept the default");
+            warn.add(at, "expected a colour 'r g b', got '" + FileWarnings.shown(value, 40) + "'; kept the default");
             return fallback;
         }
         double r = Double.parseDouble(m.group(1));
@@ -110,21 +124,29 @@ final class MtlLoader {
                                   : new double[] {r, Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3))};
     }
 
-    private static double scalar(String value, String where, List<String> warnings, double fallback) {
+    private static double scalar(String value, int at, FileWarnings warn, double fallback) {
         if (!SCALAR.matcher(value).matches()) {
-            warnings.add(where + ": expected a number, got '" + value + "'; kept the default");
+            warn.add(at, "expected a number, got '" + FileWarnings.shown(value, 40) + "'; kept the default");
             return fallback;
         }
         return Double.parseDouble(value);
     }
 
-    /** The texture file after any options, resolved next to the library; null (with a warning) if missing. */
-    private static Path texture(Path library, String value, String where, List<String> warnings) {
-        Matcher m = MAP.matcher(value);
-        String name = m.matches() ? m.group(2).strip() : value.strip();
-        Path path = library.toAbsolutePath().getParent().resolve(name).normalize();
+    /** The texture file resolved next to the library; null (with a warning) if missing. */
+    private static Path texture(Path library, TextureMap map, int at, FileWarnings warn) {
+        if (map.file().isEmpty()) {
+            warn.add(at, "expected a texture file name after the options; the material is used without it");
+            return null;
+        }
+        Path path;
+        try {
+            path = library.toAbsolutePath().getParent().resolve(Arguments.path(map.file())).normalize();
+        } catch (InvalidPathException e) {
+            warn.add(at, "texture '" + FileWarnings.shown(map.file(), 60) + "' is not a valid path; the material is used without it");
+            return null;
+        }
         if (!Files.isRegularFile(path)) {
-            warnings.add(where + ": texture " + path + " is missing; the material is used without it");
+            warn.add(at, "texture " + FileWarnings.shown(path.toString(), 200) + " is missing; the material is used without it");
             return null;
         }
         return path;

@@ -7,10 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -23,8 +20,8 @@ import raytracer.shapes.mesh.Mesh;
  * line is recognised by a precompiled pattern whose matcher is reused, and numbers are read from
  * the matched spans; chunks of plain vertex and triangle lines are parsed in parallel
  * ({@link ChunkPipeline}), everything else and every error in file order, so messages name the
- * exact line. Faces with more than three corners are fan-triangulated; negative indices
- * count back from the last vertex. A corner is a (v, vt, vn) triple; when the file has only
+ * exact line. Faces of any number of corners are fan-triangulated; negative indices count
+ * back from the last vertex. A corner is a (v, vt, vn) triple; when the file has only
  * positions the mesh uses its vertex array as is, otherwise each distinct triple becomes one mesh
  * vertex.
  */
@@ -42,11 +39,11 @@ public final class ObjLoader {
     /** Fast paths for the commonest lines (the dragon is nothing else); on failure the general patterns decide. */
     static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
     static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
-    private static final Pattern FACE = Pattern.compile("\\s*f((?:\\s+[-+]?\\d+(?:/[-+]?\\d*(?:/[-+]?\\d+)?)?)+)\\s*(?:#.*)?");
-    private static final Pattern CORNER = Pattern.compile("([-+]?\\d+)(?:/([-+]?\\d*)(?:/([-+]?\\d+))?)?");
     private static final Pattern NAMED = Pattern.compile("\\s*(mtllib|usemtl|o|g|s)(?:\\s+(.*?))?\\s*");
-    private static final Set<String> ACCEPTED = Set.of("l", "p", "cstype", "deg", "curv", "surf", "parm", "end",
-                                                      "vp", "shadow_obj", "trace_obj", "lod", "bevel", "c_interp", "d_interp");
+    /** Statements of the OBJ specification that a mesh of triangles has no use for. */
+    private static final Set<String> ACCEPTED = Set.of("l", "p", "cstype", "deg", "curv", "curv2", "surf", "parm", "end",
+        "vp", "bmat", "step", "trim", "hole", "scrv", "sp", "con", "mg", "call", "csh", "maplib", "usemap", "ctech",
+        "stech", "shadow_obj", "trace_obj", "lod", "bevel", "c_interp", "d_interp");
 
     private final Path file;
     private final String name;
@@ -54,31 +51,17 @@ public final class ObjLoader {
     private final Matcher vertex = VERTEX.matcher("");
     private final Matcher texcoord = TEXCOORD.matcher("");
     private final Matcher normal = NORMAL.matcher("");
-    private final Matcher face = FACE.matcher("");
     private final Matcher vertexPlain = VERTEX_PLAIN.matcher("");
     private final Matcher trianglePlain = TRIANGLE_PLAIN.matcher("");
-    private final Matcher corner = CORNER.matcher("");
     private final Matcher named = NAMED.matcher("");
 
     private final Buffers.Doubles positions = new Buffers.Doubles();
     private final Buffers.Floats texcoords = new Buffers.Floats();
     private final Buffers.Floats normals = new Buffers.Floats();
-    /** Corner triples of all triangles: v always, vt and vn once any corner has them (else null). */
-    private final Buffers.Ints cornerV = new Buffers.Ints();
-    private Buffers.Ints cornerVt;
-    private Buffers.Ints cornerVn;
-    private final Buffers.Ints materialIds = new Buffers.Ints();
-    private final int[] faceV = new int[64];
-    private final int[] faceVt = new int[64];
-    private final int[] faceVn = new int[64];
-
-    private final List<ObjMaterial> materials = new ArrayList<>();
-    private final Map<String, Integer> materialIndex = new HashMap<>();
-    private final Map<String, ObjMaterial> library = new HashMap<>();
     private final List<String> warnings = new ArrayList<>();
-    private final Set<String> warnedKeywords = new HashSet<>();
-    private int currentMaterial = -1;
-    private boolean materialsUsed;
+    private final FileWarnings fileWarnings;
+    private final MaterialUse materials;
+    private final Faces faces;
     private int lineNumber;
     /** The line being parsed, whose spans the matchers' groups point into. */
     private String line = "";
@@ -86,6 +69,9 @@ public final class ObjLoader {
     private ObjLoader(Path file) {
         this.file = file;
         this.name = file.toString();
+        this.fileWarnings = new FileWarnings(name, warnings);
+        this.materials = new MaterialUse(file, warnings);
+        this.faces = new Faces(name, fileWarnings);
     }
 
     /**
@@ -103,37 +89,43 @@ public final class ObjLoader {
         } catch (NoSuchFileException e) {
             throw new ObjException("cannot read mesh " + name + ": no such file");
         } catch (EOFException | ZipException e) {
-            throw new ObjException(name + ": the gzip data is truncated or corrupt (" + e.getMessage() + ")");
+            throw new ObjException(name + (isEmpty() ? ": the file is empty (no gzip data)"
+                : ": the gzip data is truncated or corrupt (" + (e.getMessage() != null ? e.getMessage() : "it ends early") + ")"));
         } catch (IOException e) {
             throw new ObjException("cannot read mesh " + name + ": " + e.getMessage(), e);
         }
-        if (cornerV.size == 0) {
+        if (faces.faces == 0) {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
-        return new ObjModel(MeshAssembly.build(this, smoothNormals), List.copyOf(materials), List.copyOf(warnings));
+        fileWarnings.finish();
+        return new ObjModel(MeshAssembly.build(this, smoothNormals), materials.materials(), List.copyOf(warnings),
+                            faces.faces, faces.ngons);
+    }
+
+    private boolean isEmpty() {
+        try {
+            return Files.size(file) == 0;
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /**
      * Appends a chunk's plain parse, if it had one and its faces name only vertices defined so far;
      * otherwise parses its lines here, in order, with everything read before them.
      */
-    private void merge(String text, PlainChunk chunk) throws ObjException {
+    private void merge(Decoding.Text text, PlainChunk chunk) throws ObjException {
+        if (text.latin1From() >= 0) {
+            int at = lineNumber + 1 + text.latin1Line();
+            fileWarnings.tally("latin1", at, n -> "a byte that is not UTF-8; this part of the file is read as ISO-8859-1 (Latin-1)");
+        }
         if (chunk.general || chunk.excess > positions.size / 3) {
-            parseLines(text);
+            parseLines(text.text());
             return;
         }
         positions.addAll(chunk.positions, chunk.positionCount);
-        cornerV.addAll(chunk.corners, chunk.cornerCount);
-        // as parsePlainTriangle would have added them, one by one
-        if (cornerVt != null) {
-            cornerVt.fill(-1, chunk.cornerCount);
-        }
-        if (cornerVn != null) {
-            cornerVn.fill(-1, chunk.cornerCount);
-        }
-        if (materialsUsed) {
-            materialIds.fill(currentMaterial, chunk.cornerCount / 3);
-        }
+        faces.addPlain(chunk.corners, chunk.cornerCount);
+        materials.addTriangles(chunk.cornerCount / 3);
         lineNumber += chunk.lines;
     }
 
@@ -177,7 +169,8 @@ public final class ObjLoader {
             return;
         }
         if (trianglePlain.reset(text).matches()) {
-            parsePlainTriangle();
+            faces.addTriangle(text, lineNumber, positions.size / 3, trianglePlain);
+            materials.addTriangles(1);
             return;
         }
         if (!keyword.reset(text).lookingAt()) {
@@ -202,100 +195,23 @@ public final class ObjLoader {
                     normals.add((float) finite(normal, g));
                 }
             }
-            case "f" -> {
-                require(face.reset(text).matches(), "'f' and at least 3 corners 'v', 'v/vt', 'v//vn' or 'v/vt/vn'");
-                parseFace(face.start(1), face.end(1));
-            }
+            case "f" -> materials.addTriangles(faces.read(text, keyword.end(), lineNumber, positions.size / 3,
+                                                          texcoords.size / 2, normals.size / 3));
             case "mtllib", "usemtl", "o", "g", "s" -> {
                 named.reset(text).matches();
-                String argument = named.group(2) == null ? "" : named.group(2);
+                String argument = Arguments.withoutComment(named.group(2) == null ? "" : named.group(2));
                 if (key.equals("mtllib")) {
-                    loadLibraries(argument);
+                    materials.loadLibraries(argument, lineNumber);
                 } else if (key.equals("usemtl")) {
-                    useMaterial(argument);
+                    materials.use(argument, lineNumber, faces.triangles());
                 }
             }
             default -> {
-                if (!ACCEPTED.contains(key) && warnedKeywords.add(key)) {
-                    warnings.add(name + ":" + lineNumber + ": unknown keyword '" + key + "' ignored (reported once)");
+                if (!ACCEPTED.contains(key)) {
+                    fileWarnings.unknownKeyword(lineNumber, key);
                 }
             }
         }
-    }
-
-    /** "f a b c" with positive indices: no corner loop, no fan. */
-    private void parsePlainTriangle() throws ObjException {
-        int count = positions.size / 3;
-        for (int g = 1; g <= 3; g++) {
-            faceV[g - 1] = resolve(trianglePlain, g, count, "vertex");
-            faceVt[g - 1] = -1;
-            faceVn[g - 1] = -1;
-        }
-        addCorner(0);
-        addCorner(1);
-        addCorner(2);
-        if (materialsUsed) {
-            materialIds.add(currentMaterial);
-        }
-    }
-
-    private void parseFace(int from, int to) throws ObjException {
-        int count = 0;
-        boolean hasVt = false;
-        boolean hasVn = false;
-        corner.reset(line).region(from, to);
-        while (corner.find()) {
-            if (count == faceV.length) {
-                throw error("a face with more than " + faceV.length + " corners");
-            }
-            faceV[count] = resolve(corner, 1, positions.size / 3, "vertex");
-            faceVt[count] = corner.start(2) < corner.end(2) ? resolve(corner, 2, texcoords.size / 2, "texture coordinate") : -1;
-            faceVn[count] = corner.start(3) >= 0 ? resolve(corner, 3, normals.size / 3, "normal") : -1;
-            hasVt |= faceVt[count] >= 0;
-            hasVn |= faceVn[count] >= 0;
-            count++;
-        }
-        if (count < 3) {
-            throw error("a face needs at least 3 vertices, got " + count);
-        }
-        if (hasVt && cornerVt == null) {
-            cornerVt = new Buffers.Ints();
-            cornerVt.fill(-1, cornerV.size);
-        }
-        if (hasVn && cornerVn == null) {
-            cornerVn = new Buffers.Ints();
-            cornerVn.fill(-1, cornerV.size);
-        }
-        // fan: (0, i, i + 1)
-        for (int i = 1; i + 1 < count; i++) {
-            addCorner(0);
-            addCorner(i);
-            addCorner(i + 1);
-            if (materialsUsed) {
-                materialIds.add(currentMaterial);
-            }
-        }
-    }
-
-    private void addCorner(int i) {
-        cornerV.add(faceV[i]);
-        if (cornerVt != null) {
-            cornerVt.add(faceVt[i]);
-        }
-        if (cornerVn != null) {
-            cornerVn.add(faceVn[i]);
-        }
-    }
-
-    /** A 0-based index from a 1-based or negative (relative) OBJ index, checked against the count so far. */
-    private int resolve(Matcher m, int group, int count, String what) throws ObjException {
-        int index = Numbers.parseInt(line, m.start(group), m.end(group));
-        int resolved = index > 0 ? index - 1 : count + index;
-        if (index == 0 || resolved < 0 || resolved >= count) {
-            throw error(what + " index " + index + " is out of range (" + count + " defined so far; indices are 1.."
-                        + count + " or -1..-" + count + ")");
-        }
-        return resolved;
     }
 
     private double finite(Matcher m, int group) throws ObjException {
@@ -310,58 +226,12 @@ public final class ObjLoader {
 
     private void require(boolean matched, String expected) throws ObjException {
         if (!matched) {
-            String shown = line.strip();
-            throw error("expected " + expected + ", got '" + (shown.length() > 60 ? shown.substring(0, 60) + "..." : shown) + "'");
+            throw error("expected " + expected + ", got '" + FileWarnings.shown(line, 60) + "'");
         }
     }
 
     private ObjException error(String message) {
         return new ObjException(name + ":" + lineNumber + ": " + message);
-    }
-
-    private void loadLibraries(String argument) {
-        Path folder = file.toAbsolutePath().getParent();
-        for (String lib : argument.split("\\s+")) {
-            if (lib.isEmpty()) {
-                continue;
-            }
-            Path path = folder.resolve(lib).normalize();
-            try {
-                library.putAll(MtlLoader.load(path, warnings));
-            } catch (ObjException e) {
-                warnings.add(name + ":" + lineNumber + ": " + e.getMessage() + "; its materials fall back to grey");
-            }
-        }
-    }
-
-    private void useMaterial(String materialName) {
-        if (!materialsUsed) {
-            materialsUsed = true;
-            // faces before the first usemtl get the fallback material
-            int before = cornerV.size / 3;
-            if (before > 0) {
-                currentMaterial = materialId("(default)");
-                materialIds.fill(currentMaterial, before);
-            }
-        }
-        currentMaterial = materialId(materialName);
-    }
-
-    private int materialId(String materialName) {
-        Integer known = materialIndex.get(materialName);
-        if (known != null) {
-            return known;
-        }
-        ObjMaterial m = library.get(materialName);
-        if (m == null) {
-            if (!materialName.equals("(default)")) {
-                warnings.add(name + ":" + lineNumber + ": material '" + materialName + "' is not defined in any mtllib; using grey");
-            }
-            m = ObjMaterial.fallback(materialName);
-        }
-        materials.add(m);
-        materialIndex.put(materialName, materials.size() - 1);
-        return materials.size() - 1;
     }
 
     // ---- read by MeshAssembly ----
@@ -378,18 +248,18 @@ public final class ObjLoader {
     }
 
     Buffers.Ints cornerV() {
-        return cornerV;
+        return faces.cornerV;
     }
 
     Buffers.Ints cornerVt() {
-        return cornerVt;
+        return faces.cornerVt;
     }
 
     Buffers.Ints cornerVn() {
-        return cornerVn;
+        return faces.cornerVn;
     }
 
     int[] materialIds() {
-        return materialsUsed ? materialIds.toArray() : null;
+        return materials.ids();
     }
 }

@@ -3,6 +3,9 @@ package raytracer.io.obj;
 import java.util.List;
 import raytracer.shapes.mesh.Mesh;
 
-/** What an OBJ file holds: one mesh, its materials (indexed by the mesh's material ids) and warnings. */
-public record ObjModel(Mesh mesh, List<ObjMaterial> materials, List<String> warnings) {
+/**
+ * What an OBJ file holds: one mesh, its materials (indexed by the mesh's material ids) and
+ * warnings; {@code faces} as written and how many of them had more than three corners ({@code ngons}).
+ */
+public record ObjModel(Mesh mesh, List<ObjMaterial> materials, List<String> warnings, int faces, int ngons) {
 }

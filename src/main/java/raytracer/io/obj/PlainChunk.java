@@ -52,15 +52,21 @@ final class PlainChunk {
         int lines = 0;
         int start = 0;
         int length = text.length();
-        // a '\r' alone ends a line too; indexOf is an intrinsic, so the next '\r' is looked up ahead
+        // a '\r' alone ends a line too; indexOf is an intrinsic, so the next '\n' and the next '\r'
+        // are each looked up ahead and again only once passed: a text without one of them (old Mac
+        // or Unix line ends) is searched to its end once, not once a line
+        int lf = indexOrLength(text, '\n', 0);
         int cr = indexOrLength(text, '\r', 0);
         while (start < length) {
-            int end = Math.min(indexOrLength(text, '\n', start), cr);
+            int end = Math.min(lf, cr);
             lines++;
             if (!parser.line(start, end)) {
                 return GENERAL;
             }
             start = end < length - 1 && text.charAt(end) == '\r' && text.charAt(end + 1) == '\n' ? end + 2 : end + 1;
+            if (lf < start) {
+                lf = indexOrLength(text, '\n', start);
+            }
             if (cr < start) {
                 cr = indexOrLength(text, '\r', start);
             }

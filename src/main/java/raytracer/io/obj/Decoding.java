@@ -1,0 +1,73 @@
+package raytracer.io.obj;
+
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * Bytes of OBJ and MTL text to characters: UTF-8 when they are valid UTF-8, else ISO-8859-1, which
+ * maps every byte to one character. Many exporters write Latin-1 names; read either way the ASCII
+ * keywords and numbers are the same, and a name keeps one character per byte instead of becoming
+ * U+FFFD, so an OBJ and its MTL decoded alike still agree on it.
+ */
+final class Decoding {
+    /** The characters, and the offset of the first byte that is not UTF-8 (-1 when all are). */
+    record Text(String text, int latin1From) {
+        /** The line (0-based) of the first byte that is not UTF-8: '\n', '\r' and "\r\n" each end one. */
+        int latin1Line() {
+            int lines = 0;
+            for (int i = 0; i < latin1From; i++) {
+                char c = text.charAt(i);
+                if (c == '\n' || c == '\r' && !(i + 1 < text.length() && text.charAt(i + 1) == '\n')) {
+                    lines++;
+                }
+            }
+            return lines;
+        }
+    }
+
+    private static final byte[] BYTE_ORDER_MARK = {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF};
+
+    private Decoding() {
+    }
+
+    /** The length of a UTF-8 byte-order mark at {@code bytes[0..length)}: 3, or 0 if there is none. */
+    static int byteOrderMark(byte[] bytes, int length) {
+        return length >= 3 && bytes[0] == BYTE_ORDER_MARK[0] && bytes[1] == BYTE_ORDER_MARK[1]
+               && bytes[2] == BYTE_ORDER_MARK[2] ? 3 : 0;
+    }
+
+    static Text decode(byte[] bytes, int from, int to) {
+        String text = new String(bytes, from, to - from, StandardCharsets.UTF_8);
+        // the JDK's decoder (an intrinsic for ASCII) writes U+FFFD for each malformed sequence; only
+        // then is the slower strict decoder needed, to tell a U+FFFD written in the file from one
+        if (text.indexOf('\uFFFD') < 0) {
+            return new Text(text, -1);
+        }
+        int bad = firstMalformed(bytes, from, to);
+        return bad < 0 ? new Text(text, -1)
+                       : new Text(new String(bytes, from, to - from, StandardCharsets.ISO_8859_1), bad - from);
+    }
+
+    /** The offset of the first byte that does not decode as UTF-8, or -1. */
+    private static int firstMalformed(byte[] bytes, int from, int to) {
+        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+            .onMalformedInput(CodingErrorAction.REPORT)
+            .onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer in = ByteBuffer.wrap(bytes, from, to - from);
+        CharBuffer out = CharBuffer.allocate(8192);
+        while (true) {
+            CoderResult result = decoder.decode(in, out, true);
+            if (result.isError()) {
+                return in.position();
+            }
+            if (result.isUnderflow()) {
+                return -1;
+            }
+            out.clear(); // overflow: the characters themselves are not needed
+        }
+    }
+}
