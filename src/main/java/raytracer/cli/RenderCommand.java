@@ -249,6 +249,7 @@ public final class RenderCommand implements Callable<Integer> {
         err.printf("stats: load scene %.3f s", loadNanos / 1e9);
         world.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
         err.println();
+        world.statistics().forEach(line -> err.println("stats: " + line));
         boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
         err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
                    prepareNanos / 1e9, s.seconds());

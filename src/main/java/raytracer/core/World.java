@@ -31,6 +31,7 @@ public final class World {
     private Light[] lights = new Light[0];
     private final Map<String, Long> timings = new LinkedHashMap<>();
     private final List<String> warnings = new ArrayList<>();
+    private final List<String> statistics = new ArrayList<>();
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -117,6 +118,15 @@ public final class World {
     /** Build steps and their durations in nanoseconds, in the order they were first recorded. */
     public Map<String, Long> timings() {
         return java.util.Collections.unmodifiableMap(timings);
+    }
+
+    /** Notes a figure of what was built (a mesh's triangles and vertices), one line, for --stats. */
+    public void addStatistic(String line) {
+        statistics.add(line);
+    }
+
+    public List<String> statistics() {
+        return List.copyOf(statistics);
     }
 
     /** Notes something odd but harmless found while building (a missing texture); the CLI prints these. */

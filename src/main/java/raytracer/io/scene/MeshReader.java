@@ -69,11 +69,23 @@ final class MeshReader {
         world.recordTiming("parse " + file.getFileName(), parsed - start);
         world.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)",
                            built - buildStart);
+        world.addStatistic(statistic(file, model));
         model.warnings().forEach(world::addWarning);
         normalMaps(o, model, mesh, textures, world);
         mesh.setMaterial(override != null ? override
                          : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
+    }
+
+    /** The mesh as loaded: what it renders (triangles, vertices) and how many faces were n-gons. */
+    static String statistic(Path file, ObjModel model) {
+        return "mesh " + file.getFileName() + ": " + count(model.mesh().triangleCount(), "triangle") + ", "
+               + count(model.mesh().vertexCount(), "vertex") + "; " + model.ngons() + " of " + count(model.faces(), "face")
+               + " had more than 3 corners (fan-triangulated)";
+    }
+
+    private static String count(int n, String what) {
+        return n + " " + (n == 1 ? what : what.equals("vertex") ? "vertices" : what + "s");
     }
 
     /**
