@@ -23,7 +23,8 @@ import raytracer.shapes.mesh.Mesh;
  * exact line. Faces of any number of corners are fan-triangulated; negative indices count
  * back from the last vertex. A corner is a (v, vt, vn) triple; when the file has only
  * positions the mesh uses its vertex array as is, otherwise each distinct triple becomes one mesh
- * vertex.
+ * vertex. Text that is not UTF-8 is read as ISO-8859-1 ({@link Decoding}); what other tools
+ * tolerate is a warning ({@link FileWarnings}), a line that does not parse an error.
  */
 public final class ObjLoader {
     static final String NUMBER = "[-+]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?";

@@ -66,19 +66,21 @@ class ObjTextTest {
 
     @Test
     void lineChunksCutOldMacLinesToo() throws IOException {
-        // a file of '\r' line ends only was one chunk, parsed serially (and 40 times slower than '\n')
-        String line = "v 1 2 3\r";
-        byte[] text = line.repeat(3 * LineChunks.CHUNK / line.length()).getBytes(StandardCharsets.US_ASCII);
-        LineChunks chunks = new LineChunks(new ByteArrayInputStream(text));
-        int count = 0;
-        int chars = 0;
-        for (Decoding.Text t = chunks.next(); t != null; t = chunks.next()) {
-            assertTrue(t.text().endsWith("\r"), "cut after a line end");
-            count++;
-            chars += t.text().length();
+        // a file of '\r' line ends only was one chunk, parsed serially (and 40 times slower than '\n');
+        // a cut never splits "\r\n" and never follows a continued line, whatever its line end
+        for (String line : new String[] {"v 1 2 3\r", "v 1 2 3\r\n", "v 1 \\\r2 3\r", "v 1 \\\r\n2 3\r\n"}) {
+            byte[] text = line.repeat(3 * LineChunks.CHUNK / line.length()).getBytes(StandardCharsets.US_ASCII);
+            LineChunks chunks = new LineChunks(new ByteArrayInputStream(text));
+            StringBuilder joined = new StringBuilder();
+            int count = 0;
+            for (Decoding.Text t = chunks.next(); t != null; t = chunks.next()) {
+                assertTrue(t.text().endsWith(line.substring(line.indexOf('3'))), "cut after a whole line: " + line);
+                count++;
+                joined.append(t.text());
+            }
+            assertEquals(new String(text, StandardCharsets.US_ASCII), joined.toString(), "every byte once, in order");
+            assertTrue(count >= 3, count + " chunks");
         }
-        assertEquals(text.length, chars);
-        assertTrue(count >= 3, count + " chunks");
     }
 
     @Test
@@ -105,6 +107,15 @@ class ObjTextTest {
         ObjModel m = ObjLoader.load(write("m.obj", SQUARE + "frob 1\nf 1 2 3\nfrob 2\nwarp\nfrob 3\n"), false);
         assertEquals(List.of(dir.resolve("m.obj") + ":5: unknown keyword 'frob' ignored (3 lines)",
                              dir.resolve("m.obj") + ":8: unknown keyword 'warp' ignored (1 line)"), m.warnings());
+        // past the first few distinct keywords the file is likely not OBJ at all: the rest are counted together
+        StringBuilder many = new StringBuilder(SQUARE + "f 1 2 3\n");
+        for (int k = 1; k <= FileWarnings.KEYWORDS_NAMED + 12; k++) {
+            many.append("kw").append(k).append(" 1\n");
+        }
+        List<String> warnings = ObjLoader.load(write("many.obj", many.toString()), false).warnings();
+        assertEquals(FileWarnings.KEYWORDS_NAMED + 1, warnings.size(), warnings.toString());
+        assertEquals(dir.resolve("many.obj") + ":" + (6 + FileWarnings.KEYWORDS_NAMED) + ": more unknown keywords ignored (12 lines)",
+                     warnings.get(FileWarnings.KEYWORDS_NAMED));
     }
 
     @Test
