@@ -56,7 +56,7 @@ final class StressScenes {
 
     /** The closed bunny mesh, its vertices themselves scaled and moved, shadowing itself and the floor. */
     static World bunny(double s, double d) {
-        World world = world(s, d, 1, CenterSampler.INSTANCE, 2, pinhole(s, d));
+        World world = world(1, CenterSampler.INSTANCE, 2, pinhole(s, d));
         add(world, floor(s, d), matte(0.8, 0.75, 0.7));
         add(world, bakedBunny(s, d, false, 0), new Phong(0.2, 0.7, new RGBColor(0.9, 0.85, 0.8),
                                                                               0.3, RGBColor.WHITE, 30, false));
@@ -69,7 +69,7 @@ final class StressScenes {
      * refraction in and out of a mesh, total internal reflection and Beer's law over scaled lengths.
      */
     static World glass(double s, double d) {
-        World world = world(s, d, 1, CenterSampler.INSTANCE, 8, pinhole(s, d));
+        World world = world(1, CenterSampler.INSTANCE, 8, pinhole(s, d));
         add(world, floor(s, d), checker(s));
         add(world, bakedBunny(s, d, true, -0.5), new Dielectric(1.5, new RGBColor(0.9 / s, 0.1 / s, 0.6 / s), 0.5, 200));
         add(world, new Sphere(p(s, d, 1.1, 0.5, 0.4), 0.5 * s), new Dielectric(1.5, new RGBColor(0.2 / s, 0.6 / s, 1.2 / s), 0.5, 200));
@@ -83,7 +83,7 @@ final class StressScenes {
      * shadow rays go to the same (scaled) points of the light at every scale.
      */
     static World areaLight(double s, double d) {
-        World world = world(s, d, 4, new MultiJittered(), 1, pinhole(s, d));
+        World world = world(4, new MultiJittered(), 1, pinhole(s, d));
         Matte matte = matte(0.8, 0.8, 0.8);
         add(world, floor(s, d), matte);
         add(world, new Sphere(p(s, d, -0.6, 0.5, 0), 0.5 * s), matte);
@@ -99,7 +99,7 @@ final class StressScenes {
         Point3D focus = p(s, d, 0, 0.5, 0);
         double focal = Math.hypot(0.5, 3.2) * s;
         ThinLens camera = new ThinLens(eye, focus, Vector3D.UP, 45, 0.2 * s, focal);
-        World world = world(s, d, 4, new MultiJittered(), 1, camera);
+        World world = world(4, new MultiJittered(), 1, camera);
         add(world, floor(s, d), checker(s));
         add(world, new Sphere(p(s, d, -1.2, 0.5, -2), 0.5 * s), matte(0.9, 0.3, 0.2));
         add(world, new Sphere(focus, 0.5 * s), matte(0.3, 0.9, 0.3));
@@ -114,7 +114,7 @@ final class StressScenes {
      * space and the hit, with its error bounds, comes back.
      */
     static World instanced(double s, double d) {
-        World world = world(s, d, 1, CenterSampler.INSTANCE, 2, pinhole(s, d));
+        World world = world(1, CenterSampler.INSTANCE, 2, pinhole(s, d));
         add(world, floor(s, d), matte(0.8, 0.75, 0.7));
         MeshBVH mesh = bvh(Bunny.MESH, false);
         Matrix4 toWorld = Matrix4.translate(d - 0.3 * s, d + 0.25 * s, d)
@@ -128,8 +128,7 @@ final class StressScenes {
         return prepared(world);
     }
 
-    private static World world(double s, double d, int samples, Sampler sampler, int depth,
-                               Camera camera) {
+    private static World world(int samples, Sampler sampler, int depth, Camera camera) {
         World world = new World(new ViewPlane(W, H, samples, sampler, depth, 1), camera, new Ambient(0.05, RGBColor.WHITE));
         world.setBackground(new RGBColor(0.1, 0.12, 0.2));
         world.setTracer(Whitted::new);
