@@ -30,7 +30,7 @@ import raytracer.math.Vector3D;
 import raytracer.shapes.mesh.Mesh;
 
 /**
- * BVH traversal on the Stanford bunny and dragon (from ../shared/assets, or -Draytracer.assets):
+ * BVH traversal on the Stanford bunny and dragon (from the repository's assets/, or -Draytracer.assets=DIR):
  * closest hit for camera rays through the mesh's bounding box, and any hit for shadow rays from
  * points on the surface towards a light, for both builders. Reports rays per microsecond, one thread.
  */
@@ -41,7 +41,7 @@ import raytracer.shapes.mesh.Mesh;
 @Measurement(iterations = 5, time = 2)
 @Fork(value = 1, jvmArgs = "-Xmx1g")
 public class MeshTraversalBenchmark {
-    @Param({"stanford-bunny.obj", "stanford-dragon.obj.gz"})
+    @Param({"stanford-bunny.obj.gz", "stanford-dragon.obj.gz"})
     public String mesh;
 
     @Param({"median", "sah"})
@@ -57,7 +57,7 @@ public class MeshTraversalBenchmark {
 
     @Setup
     public void setUp() throws Exception {
-        String assets = System.getProperty("raytracer.assets", "../shared/assets");
+        String assets = System.getProperty("raytracer.assets", "assets");
         Mesh m = ObjLoader.load(Path.of(assets, "meshes", mesh), false).mesh();
         FlatBVH tree = builder.equals("sah") ? new SahBuilder(4).build(MeshBVH.triangleBounds(m))
                                              : new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(m));

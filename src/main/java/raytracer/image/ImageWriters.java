@@ -68,7 +68,10 @@ public final class ImageWriters {
         return image;
     }
 
-    /** Portable float map: header "PF", size, -1 for little endian; rows from the bottom. */
+    /**
+     * Portable float map: header "PF", size, -1 for little endian; rows from the bottom. Every value
+     * is finite (see {@link #finite}), so a reader never meets Inf or NaN.
+     */
     static void writePfm(Film film, double exposure, OutputStream stream) throws IOException {
         DataOutputStream out = new DataOutputStream(new BufferedOutputStream(stream));
         out.write(("PF\n" + film.width() + " " + film.height() + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
@@ -77,12 +80,25 @@ public final class ImageWriters {
             row.clear();
             for (int x = 0; x < film.width(); x++) {
                 for (int c = 0; c < 3; c++) {
-                    row.putFloat((float) (film.get(x, y, c) * exposure));
+                    row.putFloat(finite(film.get(x, y, c) * exposure));
                 }
             }
             out.write(row.array(), 0, row.position());
         }
         out.flush();
+    }
+
+    /**
+     * A radiance as a finite float. Past the float range (a film holds +Inf where a pixel's double
+     * value overflowed it, for a light of intensity 1e308 say) it is the largest float of its sign:
+     * still the brightest value, as the PNG's clamp to white shows it. NaN, which the renderer never
+     * stores (it drops non-finite samples), becomes 0, as {@link ToneMap#toByte} makes it black.
+     */
+    static float finite(double radiance) {
+        if (Double.isNaN(radiance)) {
+            return 0;
+        }
+        return (float) Math.max(-Float.MAX_VALUE, Math.min(Float.MAX_VALUE, radiance));
     }
 
     /** Reads a PFM written by {@link #writePfm} (or any little/big-endian colour PFM). */

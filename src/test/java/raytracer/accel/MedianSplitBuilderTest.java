@@ -8,7 +8,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
-import raytracer.io.obj.SharedAssets;
+import raytracer.io.obj.TestAssets;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -50,7 +50,7 @@ class MedianSplitBuilderTest {
     /** The bunny (69,451 triangles) is above the default threshold, so the public builder goes parallel. */
     @Test
     void defaultBuilderOnTheBunnyEqualsTheSerialBuild() throws ObjException {
-        Mesh bunny = ObjLoader.load(SharedAssets.path("meshes/stanford-bunny.obj"), false).mesh();
+        Mesh bunny = ObjLoader.load(TestAssets.path("meshes/stanford-bunny.obj.gz"), false).mesh();
         float[] boxes = MeshBVH.triangleBoxes(bunny);
         FlatBVH serial = new MedianSplitBuilder(8, Integer.MAX_VALUE).build(boxes.clone());
         assertSameTree(serial, new MedianSplitBuilder(8).build(boxes.clone()));

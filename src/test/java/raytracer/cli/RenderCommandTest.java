@@ -112,7 +112,7 @@ class RenderCommandTest {
 
     @Test
     void bvhCostViewOfTheBunnyIsBrightestOnTheBunny() throws IOException {
-        Path bunny = raytracer.io.obj.SharedAssets.path("meshes/stanford-bunny.obj").toAbsolutePath();
+        Path bunny = raytracer.io.obj.TestAssets.path("meshes/stanford-bunny.obj.gz").toAbsolutePath();
         Path s = scene("bunny.yaml", "image: {width: 64, height: 64, samples: 1}\n"
             + "camera: {eye: [-0.017, 0.11, 0.25], look-at: [-0.017, 0.11, 0], fov: 40}\n"
             + "objects:\n  - {type: mesh, file: " + bunny + "}\n");

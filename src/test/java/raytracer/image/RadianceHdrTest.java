@@ -12,7 +12,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import raytracer.io.obj.SharedAssets;
+import raytracer.io.obj.TestAssets;
 
 class RadianceHdrTest {
     @TempDir
@@ -55,7 +55,7 @@ class RadianceHdrTest {
 
     @Test
     void truncatedFilesNameThemselves() throws IOException {
-        Path source = SharedAssets.path("env/venice_sunset_1k.hdr");
+        Path source = TestAssets.path("env/venice_sunset_1k.hdr");
         byte[] all = Files.readAllBytes(source);
         Path cut = dir.resolve("cut.hdr");
         Files.write(cut, Arrays.copyOf(all, all.length / 3));
@@ -66,11 +66,11 @@ class RadianceHdrTest {
     }
 
     @Test
-    void sharedEnvironmentMapsWithExtraHeaderLines() throws IOException {
+    void environmentMapsWithExtraHeaderLines() throws IOException {
         String[] names = {"venice_sunset_1k.hdr", "quarry_01_1k.hdr", "royal_esplanade_1k.hdr"};
         double[] peaks = {44, 64_000, 41_000};
         for (int i = 0; i < names.length; i++) {
-            Film film = ImageFiles.read(SharedAssets.path("env/" + names[i]));
+            Film film = ImageFiles.read(TestAssets.path("env/" + names[i]));
             assertEquals(1024, film.width());
             assertEquals(512, film.height());
             double peak = 0;

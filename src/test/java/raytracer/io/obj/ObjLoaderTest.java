@@ -225,11 +225,11 @@ class ObjLoaderTest {
         }
     }
 
-    // ---- real files from ../shared/assets ----
+    // ---- real files from assets/ ----
 
     @Test
     void cornellBoxQuadsNegativeIndicesAndMaterials() throws ObjException {
-        ObjModel m = ObjLoader.load(SharedAssets.path("obj-parser/cornell_box/cornell_box.obj"), false);
+        ObjModel m = ObjLoader.load(TestAssets.path("obj-parser/cornell_box/cornell_box.obj"), false);
         assertEquals(36, m.mesh().triangleCount(), "18 quads");
         assertTrue(m.materials().stream().anyMatch(x -> x.name().equals("light")), m.materials().toString());
         assertNotNull(m.mesh().materialIds());
@@ -238,7 +238,7 @@ class ObjLoaderTest {
 
     @Test
     void spotQuadsWithUvsAndATexture() throws ObjException {
-        ObjModel m = ObjLoader.load(SharedAssets.path("obj-parser/spot_quad/spot_quadrangulated.obj"), false);
+        ObjModel m = ObjLoader.load(TestAssets.path("spot/spot_quadrangulated.obj"), false);
         assertEquals(5856, m.mesh().triangleCount(), "2,928 quads");
         assertTrue(m.mesh().hasUvs());
         assertNotNull(m.materials().get(0).mapKd());
@@ -247,7 +247,7 @@ class ObjLoaderTest {
 
     @Test
     void blenderExportWithAMissingBumpMap() throws ObjException {
-        ObjModel m = ObjLoader.load(SharedAssets.path("obj-parser/blender_map_bump/map-bump.obj"), false);
+        ObjModel m = ObjLoader.load(TestAssets.path("obj-parser/blender_map_bump/map-bump.obj.gz"), false);
         assertEquals(400, m.mesh().triangleCount());
         assertTrue(m.mesh().hasNormals() && m.mesh().hasUvs());
         assertTrue(m.warnings().stream().anyMatch(w -> w.contains("bump.jpg")), m.warnings().toString());
@@ -255,10 +255,10 @@ class ObjLoaderTest {
 
     @Test
     void stanfordBunnyAndDragon() throws ObjException {
-        Mesh bunny = ObjLoader.load(SharedAssets.path("meshes/stanford-bunny.obj"), false).mesh();
+        Mesh bunny = ObjLoader.load(TestAssets.path("meshes/stanford-bunny.obj.gz"), false).mesh();
         assertEquals(69_451, bunny.triangleCount());
         assertEquals(35_947, bunny.vertexCount());
-        Mesh dragon = ObjLoader.load(SharedAssets.path("meshes/stanford-dragon.obj.gz"), false).mesh();
+        Mesh dragon = ObjLoader.load(TestAssets.path("meshes/stanford-dragon.obj.gz"), false).mesh();
         assertEquals(871_414, dragon.triangleCount());
         assertEquals(437_645, dragon.vertexCount());
         assertEquals(-0.108324, dragon.bounds().x0(), 1e-6);

@@ -164,7 +164,7 @@ class SceneLoaderTest {
 
     @Test
     void texturesAndEnvironmentMaps(@TempDir Path dir) throws IOException, SceneException {
-        Path hdr = raytracer.io.obj.SharedAssets.path("env/venice_sunset_1k.hdr").toAbsolutePath();
+        Path hdr = raytracer.io.obj.TestAssets.path("env/venice_sunset_1k.hdr").toAbsolutePath();
         Files.writeString(dir.resolve("s.yaml"), "environment: {file: " + hdr + ", intensity: 0.5}\n"
             + "materials:\n  floor: {type: matte, texture: {type: checker, size: 0.5}}\n"
             + "  chrome: {type: reflective, kr: 1, reflection-map: {file: " + hdr + "}}\n"
