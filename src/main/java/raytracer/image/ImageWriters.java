@@ -101,18 +101,39 @@ public final class ImageWriters {
         return (float) Math.max(-Float.MAX_VALUE, Math.min(Float.MAX_VALUE, radiance));
     }
 
-    /** Reads a PFM written by {@link #writePfm} (or any little/big-endian colour PFM). */
+    /**
+     * Reads a PFM written by {@link #writePfm} (or any little or big-endian colour PFM). A file that
+     * is not one, or is cut short, is an IOException naming the file and what is wrong.
+     */
     public static Film readPfm(Path path) throws IOException {
         byte[] bytes = java.nio.file.Files.readAllBytes(path);
         int[] pos = {0};
         String magic = token(bytes, pos);
-        if (!magic.equals("PF")) {
-            throw new IOException(path + ": not a colour PFM (magic '" + magic + "')");
+        if (magic.equals("Pf")) {
+            throw new IOException(path + ": a greyscale PFM; a colour PFM (PF) is expected");
         }
-        int width = Integer.parseInt(token(bytes, pos));
-        int height = Integer.parseInt(token(bytes, pos));
-        double scale = Double.parseDouble(token(bytes, pos));
+        if (!magic.equals("PF")) {
+            throw new IOException(path + ": not a PFM image (it does not start with 'PF')");
+        }
+        int width;
+        int height;
+        double scale;
+        try {
+            width = Integer.parseInt(token(bytes, pos));
+            height = Integer.parseInt(token(bytes, pos));
+            scale = Double.parseDouble(token(bytes, pos));
+        } catch (NumberFormatException e) {
+            throw new IOException(path + ": bad PFM header (width, height and scale expected after 'PF')");
+        }
+        if (width < 1 || height < 1 || (long) width * height > Film.MAX_PIXELS || scale == 0 || Double.isNaN(scale)) {
+            throw new IOException(path + ": bad PFM header: " + width + "x" + height + " pixels, scale " + scale);
+        }
         pos[0]++; // the single whitespace byte after the header
+        long expected = 12L * width * height;
+        if (bytes.length - pos[0] < expected) {
+            throw new IOException(path + ": truncated PFM: " + Math.max(0, bytes.length - pos[0]) + " bytes of pixels, "
+                                  + expected + " expected for " + width + "x" + height);
+        }
         ByteBuffer data = ByteBuffer.wrap(bytes, pos[0], bytes.length - pos[0])
             .order(scale < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
         Film film = new Film(width, height);
@@ -124,12 +145,13 @@ public final class ImageWriters {
         return film;
     }
 
+    /** The next whitespace-separated word of a header, empty at the end of the bytes. */
     private static String token(byte[] bytes, int[] pos) {
-        while (Character.isWhitespace(bytes[pos[0]])) {
+        while (pos[0] < bytes.length && Character.isWhitespace(bytes[pos[0]])) {
             pos[0]++;
         }
         int start = pos[0];
-        while (!Character.isWhitespace(bytes[pos[0]])) {
+        while (pos[0] < bytes.length && !Character.isWhitespace(bytes[pos[0]]) && pos[0] - start < 32) {
             pos[0]++;
         }
         return new String(bytes, start, pos[0] - start, StandardCharsets.US_ASCII);
