@@ -40,6 +40,7 @@ class ArchitectureTest {
         // a texture needs a decoded raster: the one family allowed to use image (which uses only math)
         Map.entry("textures", Set.of("math", "core", "image")),
         Map.entry("image", Set.of("math")),
+        Map.entry("image.chart", Set.of("image")),
         Map.entry("render", Set.of("math", "core", "image")));
 
     @Test
@@ -65,5 +66,20 @@ class ArchitectureTest {
         }
         assertTrue(files > 50, "the sources were not found from " + Path.of("").toAbsolutePath());
         assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", violations));
+    }
+
+    /** The chart library stays behind raytracer.image.chart, so it can be swapped in one place. */
+    @Test
+    void onlyTheChartPackageUsesTheChartLibrary() throws IOException {
+        List<String> users = new ArrayList<>();
+        try (Stream<Path> paths = Files.walk(SOURCES)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                if (Files.readString(file).contains("import org.jfree.")
+                    && !file.getParent().equals(SOURCES.resolve("image/chart"))) {
+                    users.add(SOURCES.relativize(file).toString());
+                }
+            }
+        }
+        assertTrue(users.isEmpty(), "JFreeChart used outside raytracer.image.chart: " + users);
     }
 }
