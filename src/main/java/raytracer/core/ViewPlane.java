@@ -30,6 +30,11 @@ public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int
         return new ViewPlane(hres, vres, n, sampler, maxDepth, exposure);
     }
 
+    /** The same settings with another sample pattern; the sample count is rounded for it anew. */
+    public ViewPlane withSampler(Sampler s) {
+        return new ViewPlane(hres, vres, numSamples, s, maxDepth, exposure);
+    }
+
     public ViewPlane withMaxDepth(int d) {
         return new ViewPlane(hres, vres, numSamples, sampler, d, exposure);
     }

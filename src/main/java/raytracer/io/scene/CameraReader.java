@@ -14,6 +14,7 @@ final class CameraReader {
     static final Point3D DEFAULT_EYE = new Point3D(0, 1, 6);
     static final Point3D DEFAULT_LOOK_AT = new Point3D(0, 0.5, 0);
     static final double DEFAULT_FOV = 45;
+    static final double DEFAULT_VIEW_HEIGHT = 4;
 
     private CameraReader() {
     }
@@ -40,7 +41,7 @@ final class CameraReader {
                 case "pinhole" -> new Pinhole(eye, lookAt, up, c.number("fov", DEFAULT_FOV));
                 case "thin-lens" -> new ThinLens(eye, lookAt, up, c.number("fov", DEFAULT_FOV),
                     c.number("lens-radius", 0.05), c.number("focal-distance", eye.distance(lookAt)));
-                default -> new Orthographic(eye, lookAt, up, c.number("view-height", 4));
+                default -> new Orthographic(eye, lookAt, up, c.number("view-height", DEFAULT_VIEW_HEIGHT));
             };
         } catch (IllegalArgumentException e) {
             throw source.error(node, e.getMessage());

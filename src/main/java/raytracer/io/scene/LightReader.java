@@ -1,5 +1,6 @@
 package raytracer.io.scene;
 
+import java.util.OptionalInt;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.GeometricObject;
@@ -22,9 +23,14 @@ final class LightReader {
     }
 
     static final int AREA_SAMPLES = 16;
+    static final double AREA_RADIANCE = 1;
+    static final double AREA_RADIUS = 1;
 
-    /** Reads a light; an area light that is {@code visible} also adds its emitting shape to the world. */
-    static Light read(Source source, Node node, World world) throws SceneException {
+    /**
+     * Reads a light; an area light that is {@code visible} also adds its emitting shape to the world.
+     * {@code areaLightSamples}, when present, replaces every area light's {@code samples}.
+     */
+    static Light read(Source source, Node node, World world, OptionalInt areaLightSamples) throws SceneException {
         String kind = YamlObject.peekType(source, node, "light", null);
         YamlObject common = null;
         Light light = switch (kind) {
@@ -46,7 +52,7 @@ final class LightReader {
             }
             case "rectangle", "disk", "sphere" -> {
                 common = new YamlObject(source, node, kind + " light", areaKeys(kind));
-                yield area(common, kind, world);
+                yield area(common, kind, world, areaLightSamples);
             }
             default -> throw source.error(YamlObject.typeNode(node),
                 "unknown light type '" + kind + "'; allowed: directional, disk, point, rectangle, sphere");
@@ -69,10 +75,13 @@ final class LightReader {
      * An area light of radiance {@code radiance color}; the emitting shape, if visible, is an
      * emissive object that casts no shadow (the light's own samples lie on it).
      */
-    private static Light area(YamlObject l, String kind, World world) throws SceneException {
-        double ls = l.number("radiance", 1, 0, false);
+    private static Light area(YamlObject l, String kind, World world, OptionalInt areaLightSamples) throws SceneException {
+        double ls = l.number("radiance", AREA_RADIANCE, 0, false);
         RGBColor color = l.color("color", RGBColor.WHITE);
         int samples = l.integer("samples", AREA_SAMPLES, 1);
+        if (areaLightSamples.isPresent()) {
+            samples = areaLightSamples.getAsInt();
+        }
         Light light;
         GeometricObject shape;
         try {
@@ -87,13 +96,13 @@ final class LightReader {
                 case "disk" -> {
                     Point3D center = l.requiredPoint("center");
                     Vector3D normal = l.requiredVector("normal");
-                    double radius = l.number("radius", 1, 0, true);
+                    double radius = l.number("radius", AREA_RADIUS, 0, true);
                     light = AreaLight.disk(center, normal, radius, ls, color, samples);
                     shape = new Disk(center, normal, radius);
                 }
                 default -> {
                     Point3D center = l.requiredPoint("center");
-                    double radius = l.number("radius", 1, 0, true);
+                    double radius = l.number("radius", AREA_RADIUS, 0, true);
                     light = AreaLight.sphere(center, radius, ls, color, samples);
                     shape = new Sphere(center, radius);
                 }

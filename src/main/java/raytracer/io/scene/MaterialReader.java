@@ -21,6 +21,8 @@ import raytracer.math.RGBColor;
 final class MaterialReader {
     static final double KA = 0.2;
     static final double KD = 0.8;
+    /** The colour of the default material. */
+    static final double DEFAULT_GREY = 0.8;
     static final double KS = 0.2;
     static final double EXPONENT = 20;
     static final double KR = 0.75;
@@ -34,7 +36,7 @@ final class MaterialReader {
 
     /** The material of objects that name none: matte light grey. */
     static Material defaultMaterial() {
-        return new Matte(KA, KD, RGBColor.gray(0.8));
+        return new Matte(KA, KD, RGBColor.gray(DEFAULT_GREY));
     }
 
     /** A fitted model: a preset by name, or explicit rho-d, rho-s and alpha / exponent. */

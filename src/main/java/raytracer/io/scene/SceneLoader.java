@@ -10,6 +10,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.OptionalInt;
 import java.util.Set;
 import org.yaml.snakeyaml.LoaderOptions;
 import org.yaml.snakeyaml.Yaml;
@@ -33,17 +34,34 @@ import raytracer.tracers.Whitted;
  * view plane). Every problem becomes a {@link SceneException} naming file, line and column.
  */
 public final class SceneLoader {
-    private static final Set<String> SECTIONS =
+    static final Set<String> SECTIONS =
         Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
-    private static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding");
+    static final double AMBIENT_RADIANCE = 0.1;
+    static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding");
 
     private SceneLoader() {
     }
 
     public static World load(Path file) throws SceneException {
-        String text;
+        return load(file, OptionalInt.empty());
+    }
+
+    /**
+     * As {@link #load(Path)}; with {@code areaLightSamples} every area light takes that many samples
+     * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
+     */
+    public static World load(Path file, OptionalInt areaLightSamples) throws SceneException {
+        return load(source(file), text(file), areaLightSamples);
+    }
+
+    static Source source(Path file) {
+        return new Source(file.toString(), file.toAbsolutePath().getParent());
+    }
+
+    /** The file's text, or a SceneException saying why it cannot be read. */
+    static String text(Path file) throws SceneException {
         try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
+            return Files.readString(file, StandardCharsets.UTF_8);
         } catch (NoSuchFileException e) {
             throw new SceneException("cannot read scene file " + file + ": no such file");
         } catch (AccessDeniedException e) {
@@ -54,16 +72,20 @@ public final class SceneLoader {
             String reason = Files.isDirectory(file) ? "it is a directory" : e.getMessage();
             throw new SceneException("cannot read scene file " + file + ": " + reason, e);
         }
-        Path folder = file.toAbsolutePath().getParent();
-        return load(new Source(file.toString(), folder), text);
     }
 
     /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
     public static World load(String sourceName, String text) throws SceneException {
-        return load(new Source(sourceName, null), text);
+        return load(new Source(sourceName, null), text, OptionalInt.empty());
     }
 
-    private static World load(Source source, String text) throws SceneException {
+    static World load(Source source, String text, OptionalInt areaLightSamples) throws SceneException {
+        Node root = compose(source, text);
+        return build(source, root, new YamlObject(source, root, "the scene", SECTIONS), areaLightSamples);
+    }
+
+    /** The YAML tree of the text, or a SceneException pointing at the syntax error. */
+    static Node compose(Source source, String text) throws SceneException {
         Node root;
         try {
             LoaderOptions options = new LoaderOptions();
@@ -79,7 +101,10 @@ public final class SceneLoader {
         if (root == null) {
             throw new SceneException(source.name() + ": the scene file is empty");
         }
-        YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
+        return root;
+    }
+
+    private static World build(Source source, Node root, YamlObject scene, OptionalInt areaLightSamples) throws SceneException {
         ViewPlane vp = readImage(source, scene);
         Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
         World world = new World(vp, camera, readAmbient(source, scene));
@@ -105,7 +130,7 @@ public final class SceneLoader {
         }
         Map<String, Material> materials = readMaterials(source, scene, textures);
         for (Node light : scene.list("lights")) {
-            world.addLight(LightReader.read(source, light, world));
+            world.addLight(LightReader.read(source, light, world, areaLightSamples));
         }
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");
@@ -160,10 +185,10 @@ public final class SceneLoader {
 
     private static Light readAmbient(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("ambient")) {
-            return new Ambient(0.1, RGBColor.WHITE);
+            return new Ambient(AMBIENT_RADIANCE, RGBColor.WHITE);
         }
         YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", Set.of("radiance", "color"));
-        return new Ambient(a.number("radiance", 0.1, 0, false), a.color("color", RGBColor.WHITE));
+        return new Ambient(a.number("radiance", AMBIENT_RADIANCE, 0, false), a.color("color", RGBColor.WHITE));
     }
 
     private static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)
