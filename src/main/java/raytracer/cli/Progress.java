@@ -12,6 +12,7 @@ final class Progress implements AutoCloseable {
     private static final int WIDTH = 30;
 
     private final PrintStream out;
+    private final String label;
     private final DoubleSupplier fraction;
     private final Thread thread;
     private final long start = System.nanoTime();
@@ -19,7 +20,13 @@ final class Progress implements AutoCloseable {
     private boolean drawn;
 
     Progress(PrintStream out, DoubleSupplier fraction) {
+        this(out, "", fraction);
+    }
+
+    /** A bar preceded by {@code label} (which render of several this is). */
+    Progress(PrintStream out, String label, DoubleSupplier fraction) {
         this.out = out;
+        this.label = label.isEmpty() ? "" : label + " ";
         this.fraction = fraction;
         this.thread = new Thread(this::loop, "progress");
         thread.setDaemon(true);
@@ -44,7 +51,7 @@ final class Progress implements AutoCloseable {
         int filled = (int) Math.round(f * WIDTH);
         double seconds = elapsedNanos / 1e9;
         String eta = f > 0.01 ? formatSeconds(seconds * (1 - f) / f) : "--";
-        out.print("\r[" + "#".repeat(filled) + " ".repeat(WIDTH - filled) + "] "
+        out.print("\r" + label + "[" + "#".repeat(filled) + " ".repeat(WIDTH - filled) + "] "
                   + String.format("%5.1f%%  elapsed %s  ETA %s ", 100 * f, formatSeconds(seconds), eta));
         out.flush();
         drawn = true;
@@ -63,7 +70,7 @@ final class Progress implements AutoCloseable {
         running = false;
         thread.interrupt();
         if (drawn) {
-            out.print("\r" + " ".repeat(WIDTH + 50) + "\r");
+            out.print("\r" + " ".repeat(label.length() + WIDTH + 50) + "\r");
             out.flush();
         }
     }

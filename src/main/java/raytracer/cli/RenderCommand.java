@@ -37,7 +37,7 @@ import raytracer.tracers.BvhCost;
  * stderr and a non-zero exit; {@code --verbose} adds the stack trace.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
-         sortOptions = false,
+         sortOptions = false, subcommands = ConvergeCommand.class,
          description = "Renders a scene file (YAML or JSON) to PNG or PFM. Without SCENE, renders the built-in default scene.")
 public final class RenderCommand implements Callable<Integer> {
     static final String DEFAULT_SCENE_RESOURCE = "/raytracer/scenes/default.yaml";

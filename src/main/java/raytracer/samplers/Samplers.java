@@ -14,6 +14,16 @@ public final class Samplers {
         return NAMES;
     }
 
+    /** The name of a sampler's pattern, as {@link #byName} takes it. */
+    public static String nameOf(Sampler sampler) {
+        for (String name : NAMES) {
+            if (byName(name).getClass() == sampler.getClass()) {
+                return name;
+            }
+        }
+        return sampler.getClass().getSimpleName();
+    }
+
     public static Sampler byName(String name) {
         return switch (name) {
             case "regular" -> new Regular();

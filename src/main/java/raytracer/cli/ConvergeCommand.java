@@ -1,0 +1,316 @@
+package raytracer.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.OptionalInt;
+import java.util.TreeSet;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import raytracer.accel.Aggregation;
+import raytracer.core.Light;
+import raytracer.core.ViewPlane;
+import raytracer.core.World;
+import raytracer.image.AtomicFile;
+import raytracer.image.ErrorMetrics;
+import raytracer.image.Film;
+import raytracer.io.scene.SceneException;
+import raytracer.io.scene.SceneLoader;
+import raytracer.render.RenderStats;
+import raytracer.render.Renderer;
+import raytracer.samplers.Samplers;
+
+/**
+ * {@code render converge SCENE ...}: renders a scene at several sample counts or time budgets, for
+ * one or more configurations, measures each image's error against a reference and prints a table,
+ * the slope of each curve, and a log-log plot of error against render time (issue 13).
+ */
+@Command(name = "converge", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class, sortOptions = false,
+         description = {"Renders SCENE at several sample counts (--spp) and/or time budgets (--time), for each configuration "
+                        + "(--config), compares each image with a reference and prints a table of the errors; writes a log-log "
+                        + "plot of relative RMSE against render time, one curve per configuration.",
+                        "Seconds are the render's wall time (scene loading and BVH building excluded); before the timed renders "
+                        + "of a configuration, one untimed render at its smallest sample count (at least 4) warms the JIT up."},
+         footer = {"", "Metrics, over all pixels and the 3 channels of linear radiance times the scene's exposure (n values x_i, "
+                   + "reference r_i):",
+                   "  RMSE = sqrt(sum (x_i - r_i)^2 / n);  relative RMSE = RMSE / mean(r_i);",
+                   "  relative MSE = sum ((x_i - r_i)^2 / (r_i^2 + 0.01)) / n (pbrt's; the 0.01 spares black pixels);",
+                   "  worst pixel = the largest |x_i - r_i|, at (column, row) from the top left.",
+                   "Slope: least squares of log(relative RMSE) against log(seconds); independent samples give -0.5."})
+final class ConvergeCommand implements Callable<Integer> {
+    static final int WARM_UP_MIN_SPP = 4;
+    static final int PLOT_WIDTH = 900;
+    static final int PLOT_HEIGHT = 600;
+
+    @Parameters(index = "0", paramLabel = "SCENE", description = "Scene file (.yaml, .yml or .json).")
+    Path scene;
+
+    @Option(names = {"-s", "--spp"}, split = ",", paramLabel = "N",
+            description = "Sample counts per pixel, comma-separated (square patterns round up to a square). "
+                          + "Default: 1,4,16,64 unless --time is given.")
+    List<Integer> spp = new ArrayList<>();
+
+    @Option(names = "--time", split = ",", paramLabel = "SECONDS",
+            description = "Time budgets: for each, the sample count that the configuration's last render says fits in it.")
+    List<Double> budgets = new ArrayList<>();
+
+    @Option(names = "--config", paramLabel = "KEY=VALUE[,...]",
+            description = "A configuration (repeat for more): sampler=NAME (" + "regular, random, jittered, n-rooks, multi-jittered, "
+                          + "hammersley), light-samples=N per area light, cutoff=C, label=TEXT; a/b in a value makes one "
+                          + "configuration per alternative. Default: the scene's own settings.")
+    List<String> configs = new ArrayList<>();
+
+    @Option(names = "--reference", paramLabel = "REF",
+            description = "auto (default: closed-form when the scene has an exact image, else self), closed-form, self "
+                          + "(the scene rendered at --reference-spp with another seed, cached), or a .pfm file of the image's size.")
+    String reference = "auto";
+
+    @Option(names = "--reference-spp", paramLabel = "N", description = "Samples per pixel of a self-rendered reference. Default: ${DEFAULT-VALUE}.")
+    int referenceSpp = 4096;
+
+    @Option(names = "--cache", paramLabel = "DIR",
+            description = "Folder of self-rendered references. Default: $XDG_CACHE_HOME/raytracer/references or ~/.cache/raytracer/references.")
+    Path cacheDir;
+
+    @Option(names = "--no-cache", description = "Neither read nor write cached references.")
+    boolean noCache;
+
+    @Option(names = "--plot", paramLabel = "FILE.png", description = "The log-log plot. Default: <scene name>-convergence.png")
+    Path plot;
+
+    @Option(names = "--csv", paramLabel = "FILE", description = "Also write the table as comma-separated values.")
+    Path csv;
+
+    @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")
+    Integer width;
+
+    @Option(names = {"-H", "--height"}, paramLabel = "H", description = "Image height (overrides the scene).")
+    Integer height;
+
+    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads. Default: all cores (${DEFAULT-VALUE}).")
+    int threads = Runtime.getRuntime().availableProcessors();
+
+    @Option(names = "--seed", paramLabel = "S",
+            description = "Seed of the measured renders; a self-rendered reference uses its bitwise complement. Default: ${DEFAULT-VALUE}.")
+    long seed = 1;
+
+    @Option(names = {"-q", "--quiet"}, description = "No progress, no notes: only the table.")
+    boolean quiet;
+
+    @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
+    boolean verbose;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return converge(err);
+        } catch (CommandLine.ParameterException e) {
+            throw e;
+        } catch (Exception | OutOfMemoryError e) {
+            String message = e instanceof OutOfMemoryError
+                ? "out of memory; give Java more heap, e.g. java -Xmx8g -jar render.jar converge ..."
+                : e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
+            err.println("render converge: error: " + message.replace('\n', ' '));
+            if (verbose) {
+                e.printStackTrace(err);
+            }
+            return 1;
+        }
+    }
+
+    private int converge(PrintWriter err) throws Exception {
+        List<ConvergeConfig> curves = validate();
+        PrintWriter note = quiet ? new PrintWriter(PrintWriter.nullWriter()) : err;
+        Path plotFile = plot != null ? plot : Path.of(stem(scene) + "-convergence.png");
+        checkWritable(plotFile, ".png");
+        if (csv != null) {
+            checkWritable(csv, "");
+        }
+        World base = load(ConvergeConfig.SCENE, err);
+        ViewPlane vp = base.viewPlane();
+        Film ref = reference(base, note);
+        List<ConvergeRow> rows = new ArrayList<>();
+        int total = curves.size() * (spp.size() + budgets.size());
+        for (ConvergeConfig config : curves) {
+            measure(config, ref, vp.exposure(), rows, total, note);
+        }
+        spec.commandLine().getOut().print(ConvergeReport.table(rows));
+        ConvergeReport.slopes(rows).forEach((name, slope) -> spec.commandLine().getOut().printf(Locale.ROOT,
+            "slope of log error against log seconds, %s: %.2f%n", name, slope));
+        spec.commandLine().getOut().flush();
+        if (csv != null) {
+            AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
+        }
+        String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
+                       + " thread" + (threads == 1 ? "" : "s") + ")";
+        ConvergeReport.chart(title, rows).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
+        note.println("converge: plot written to " + plotFile);
+        return 0;
+    }
+
+    /** Checks the options; returns the configurations to measure. Bad values are usage errors (exit code 2). */
+    private List<ConvergeConfig> validate() {
+        if (spp.isEmpty() && budgets.isEmpty()) {
+            spp = new ArrayList<>(List.of(1, 4, 16, 64));
+        }
+        for (int n : spp) {
+            usageIf(n < 1, "--spp values must be at least 1, got " + n);
+        }
+        for (double t : budgets) {
+            usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
+        }
+        usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
+        usageIf(threads < 1, "--threads must be at least 1, got " + threads);
+        usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
+        usageIf(height != null && height < 1, "--height must be at least 1, got " + height);
+        usageIf(!List.of("auto", "closed-form", "self").contains(reference) && !reference.toLowerCase(Locale.ROOT).endsWith(".pfm"),
+                "--reference must be auto, closed-form, self or a .pfm file, got '" + reference + "'");
+        spp = new ArrayList<>(new TreeSet<>(spp));
+        budgets = new ArrayList<>(new TreeSet<>(budgets));
+        if (configs.isEmpty()) {
+            return List.of(ConvergeConfig.SCENE);
+        }
+        List<ConvergeConfig> curves = new ArrayList<>();
+        for (String text : configs) {
+            try {
+                curves.addAll(ConvergeConfig.parse(text));
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+            }
+        }
+        return curves;
+    }
+
+    private void usageIf(boolean bad, String message) {
+        if (bad) {
+            throw new CommandLine.ParameterException(spec.commandLine(), message);
+        }
+    }
+
+    /** The scene with a configuration's overrides and the image size, prepared for rendering. */
+    private World load(ConvergeConfig config, PrintWriter err) throws SceneException {
+        World world = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
+        if (!quiet && config == ConvergeConfig.SCENE) {
+            world.warnings().forEach(w -> err.println("render converge: warning: " + w));
+        }
+        ViewPlane vp = world.viewPlane();
+        if (config.sampler() != null) {
+            vp = vp.withSampler(Samplers.byName(config.sampler()));
+        }
+        world.setViewPlane(vp.withResolution(width != null ? width : vp.hres(), height != null ? height : vp.vres()));
+        if (config.cutoff() != null) {
+            world.setCutoff(config.cutoff());
+        }
+        world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));
+        return world;
+    }
+
+    private Film reference(World base, PrintWriter note) throws Exception {
+        ViewPlane vp = base.viewPlane();
+        if (!List.of("auto", "closed-form", "self").contains(reference)) {
+            Film film = ConvergeReference.fromFile(Path.of(reference), vp.hres(), vp.vres());
+            note.println("converge: reference: " + reference);
+            return film;
+        }
+        if (!reference.equals("self")) {
+            var exact = ConvergeReference.closedForm(scene, vp.hres(), vp.vres(), note, reference.equals("closed-form"));
+            if (exact.isPresent()) {
+                return exact.get();
+            }
+        }
+        ReferenceCache cache = noCache ? null
+            : new ReferenceCache(cacheDir != null ? cacheDir : ReferenceCache.defaultDir(System.getenv(), System.getProperty("user.home")));
+        Film film = ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache,
+                                               (world, f) -> render(world, f, ~seed, "reference"), note);
+        int most = spp.isEmpty() ? referenceSpp : spp.get(spp.size() - 1);
+        note.printf(Locale.ROOT, "converge: the reference's own noise makes an RMSE measured at %d spp about %.1f%% too high%n",
+                    most, 100 * (Math.sqrt(1 + (double) most / referenceSpp) - 1));
+        return film;
+    }
+
+    /** Renders one configuration: a warm-up, then each sample count and each time budget. */
+    private void measure(ConvergeConfig config, Film ref, double exposure, List<ConvergeRow> rows, int total, PrintWriter note)
+            throws SceneException {
+        World world = load(config, note);
+        ViewPlane vp = world.viewPlane();
+        String lights = lightSamples(world);
+        String name = config.name(Samplers.nameOf(vp.sampler()), lights, world.cutoff());
+        int warmSpp = Math.max(WARM_UP_MIN_SPP, spp.isEmpty() ? 1 : spp.get(0));
+        Film film = new Film(vp.hres(), vp.vres());
+        RenderStats warm = render(withSamples(world, warmSpp), film, seed, name + ", warm-up");
+        double secondsPerSpp = warm.seconds() / warm.samplesPerPixel();
+        List<Integer> counts = new ArrayList<>(spp);
+        for (int i = 0; i < counts.size() + budgets.size(); i++) {
+            int n = i < counts.size() ? counts.get(i)
+                : (int) Math.max(1, Math.min(1 << 20, Math.round(budgets.get(i - counts.size()) / secondsPerSpp)));
+            RenderStats stats = render(withSamples(world, n), film, seed, name + ", " + n + " spp");
+            secondsPerSpp = stats.seconds() / stats.samplesPerPixel();
+            ErrorMetrics error = ErrorMetrics.compare(film, exposure, ref);
+            rows.add(new ConvergeRow(name, stats.samplesPerPixel(), lights, stats.seconds(), error));
+            note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,
+                        stats.samplesPerPixel(), stats.seconds(), error.relativeRmse());
+        }
+    }
+
+    /** The area lights' samples per shaded point as the renderer takes them (rounded for the sampler); "-" without area lights. */
+    static String lightSamples(World world) {
+        TreeSet<Integer> counts = new TreeSet<>();
+        for (Light light : world.lights()) {
+            if (light.hasExtent()) {
+                counts.add(world.viewPlane().sampler().supportedCount(light.sampleCount()));
+            }
+        }
+        return counts.isEmpty() ? "-" : counts.size() == 1 ? counts.first().toString() : counts.first() + "-" + counts.last();
+    }
+
+    private static World withSamples(World world, int n) {
+        world.setViewPlane(world.viewPlane().withSamples(n));
+        return world;
+    }
+
+    /** One render into {@code film}, with a progress bar on a terminal. */
+    private RenderStats render(World world, Film film, long renderSeed, String label) {
+        Renderer renderer = new Renderer(world, threads, renderSeed);
+        if (quiet || System.console() == null) {
+            return renderer.render(film);
+        }
+        Progress progress = new Progress(System.err, label, renderer::progress);
+        try {
+            return renderer.render(film);
+        } finally {
+            progress.close();
+        }
+    }
+
+    private static String stem(Path file) {
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(0, dot) : name;
+    }
+
+    /** Fails before the first render, not after the last, when an output could not be written. */
+    private static void checkWritable(Path out, String extension) throws IOException {
+        if (!out.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(extension)) {
+            throw new IOException("cannot write " + out + ": the plot is a PNG file, give a name ending in .png");
+        }
+        Path dir = out.toAbsolutePath().getParent();
+        if (Files.isDirectory(out) || dir == null || !Files.isDirectory(dir) || !Files.isWritable(dir)) {
+            throw new IOException("cannot write " + out + ": " + (Files.isDirectory(out) ? "it is a directory"
+                                  : "directory " + dir + " does not exist or is not writable"));
+        }
+    }
+}

@@ -1,0 +1,181 @@
+package raytracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import raytracer.cli.RenderCommandTest.Result;
+import raytracer.image.Film;
+import raytracer.image.ImageWriters;
+
+/**
+ * {@code render converge} end to end on tiny images: the table's rows (read from --csv), the plot,
+ * the closed-form and the cached self-rendered references, and one clear line for each mistake.
+ */
+class ConvergeCommandTest {
+    @TempDir
+    Path dir;
+
+    private static final String SPHERES = """
+        image: {width: 16, height: 12, samples: 4}
+        tracer: ray-cast
+        ambient: {radiance: 0}
+        camera: {eye: [0, 2, 5], look-at: [0, 0.5, 0], fov: 40}
+        lights:
+          - {type: rectangle, corner: [-1, 3, -1], edge-a: [2, 0, 0], edge-b: [0, 0, 2], radiance: 8, samples: 1, visible: false}
+        objects:
+          - {type: plane, normal: [0, 1, 0]}
+          - {type: sphere, center: [0, 0.7, 0], radius: 0.7}
+        """;
+
+    private Path write(String name, String text) throws IOException {
+        Path file = dir.resolve(name);
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        return file;
+    }
+
+    private static Result converge(String... args) {
+        return RenderCommandTest.run(Stream.concat(Stream.of("converge"), Stream.of(args)).toArray(String[]::new));
+    }
+
+    /** The CSV's data lines, split into fields (the quoted configuration name first). */
+    private static List<String[]> rows(Path csv) throws IOException {
+        List<String> lines = Files.readAllLines(csv);
+        assertTrue(lines.get(0).startsWith("configuration,spp,light_samples,seconds,rmse,relative_rmse"), lines.get(0));
+        return lines.stream().skip(1).map(l -> l.split(",(?=(?:[^\"]*\"[^\"]*\")*[^\"]*$)")).toList();
+    }
+
+    @Test
+    void measuresEachConfigurationAgainstTheExactImageAndPlotsThem() throws IOException {
+        Path csv = dir.resolve("t.csv");
+        Path plot = dir.resolve("p.png");
+        Result r = converge(Path.of("scenes", "closed-form-rectangle.yaml").toString(), "-W", "16", "-H", "16", "--spp", "1,16",
+                            "--config", "sampler=random/jittered,light-samples=1", "--csv", csv.toString(), "--plot", plot.toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("reference: the exact image (closed form)"), r.err());
+        assertTrue(r.err().contains("[4/4] jittered, 1 light sample: 16 spp"), r.err());
+        List<String[]> rows = rows(csv);
+        assertEquals(4, rows.size());
+        assertEquals("\"random, 1 light sample\"", rows.get(0)[0]);
+        assertEquals("16", rows.get(3)[1]);
+        for (int i = 0; i < 4; i += 2) {
+            double at1 = Double.parseDouble(rows.get(i)[5]);
+            double at16 = Double.parseDouble(rows.get(i + 1)[5]);
+            // 16 times the samples: about a quarter of the error (stratified pixels may do better)
+            assertTrue(at16 < at1 / 2.5, "relative RMSE at 1 spp " + at1 + ", at 16 spp " + at16);
+        }
+        BufferedImage image = ImageIO.read(plot.toFile());
+        assertEquals(ConvergeCommand.PLOT_WIDTH, image.getWidth());
+        assertEquals(ConvergeCommand.PLOT_HEIGHT, image.getHeight());
+    }
+
+    @Test
+    void errorsAreMeasuredInTheUnitsOfThePfmOutput() throws IOException {
+        // exposure scales the image and the exact image alike: the relative error does not change
+        String text = Files.readString(Path.of("scenes", "closed-form-disk.yaml"));
+        Path bright = write("bright.yaml", text.replace("samples: 16}", "samples: 16, exposure: 3}"));
+        Path plain = write("plain.yaml", text);
+        double[] relative = new double[2];
+        double[] rmse = new double[2];
+        Path[] scenes = {plain, bright};
+        for (int i = 0; i < 2; i++) {
+            Path csv = dir.resolve(i + ".csv");
+            Result r = converge(scenes[i].toString(), "-W", "12", "-H", "12", "--spp", "4", "-q", "--csv", csv.toString(),
+                                "--plot", dir.resolve(i + ".png").toString());
+            assertEquals(0, r.code(), r.err());
+            relative[i] = Double.parseDouble(rows(csv).get(0)[5]);
+            rmse[i] = Double.parseDouble(rows(csv).get(0)[4]);
+        }
+        assertEquals(relative[0], relative[1], 1e-6 * relative[0]);
+        assertEquals(3 * rmse[0], rmse[1], 1e-6 * rmse[1]);
+    }
+
+    @Test
+    void aSelfRenderedReferenceIsCachedAndReused() throws IOException {
+        Path scene = write("spheres.yaml", SPHERES);
+        Path cache = dir.resolve("cache");
+        String[] args = {scene.toString(), "--spp", "1,4", "--time", "0.01", "--reference-spp", "64", "--cache", cache.toString(),
+                         "--csv", dir.resolve("a.csv").toString(), "--plot", dir.resolve("a.png").toString()};
+        Result first = converge(args);
+        assertEquals(0, first.code(), first.err());
+        assertTrue(first.err().contains("rendering the reference: 64 spp, seed -2"), first.err());
+        try (Stream<Path> files = Files.list(cache)) {
+            List<String> names = files.map(p -> p.getFileName().toString()).sorted().toList();
+            assertEquals(2, names.size(), names.toString());
+            assertTrue(names.get(0).matches("spheres-[0-9a-f]{16}\\.pfm"), names.toString());
+            assertTrue(names.get(1).endsWith(".txt"));
+        }
+        List<String[]> firstCsv = rows(dir.resolve("a.csv"));
+        assertEquals(3, firstCsv.size(), "1 and 4 spp and one time budget");
+        args[args.length - 3] = dir.resolve("b.csv").toString();
+        Result second = converge(args);
+        assertEquals(0, second.code(), second.err());
+        assertTrue(second.err().contains("reused"), second.err());
+        assertFalse(second.err().contains("rendering the reference"), second.err());
+        // the same renders against the same reference: the same errors (times differ)
+        List<String[]> secondCsv = rows(dir.resolve("b.csv"));
+        for (int i = 0; i < 2; i++) {
+            assertEquals(firstCsv.get(i)[4], secondCsv.get(i)[4]);
+        }
+        // another seed for the measured renders keeps the reference, another reference spp does not
+        Result other = converge(scene.toString(), "--spp", "1", "--reference-spp", "16", "--cache", cache.toString(), "-q",
+                                "--plot", dir.resolve("c.png").toString());
+        assertEquals(0, other.code(), other.err());
+        try (Stream<Path> files = Files.list(cache)) {
+            assertEquals(4, files.count());
+        }
+    }
+
+    @Test
+    void aGivenReferenceFileIsUsedAndABadOneIsOneLine() throws IOException {
+        Path scene = write("spheres.yaml", SPHERES);
+        Path ref = dir.resolve("ref.pfm");
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--spp", "64", "--seed", "9", "-o", ref.toString(), "-q").code());
+        Path csv = dir.resolve("r.csv");
+        Result r = converge(scene.toString(), "--spp", "4", "--reference", ref.toString(), "--csv", csv.toString(),
+                            "--plot", dir.resolve("r.png").toString());
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Double.parseDouble(rows(csv).get(0)[5]) > 0);
+
+        Path small = dir.resolve("small.pfm");
+        ImageWriters.write(new Film(8, 8), 1, small);
+        assertOneLine(converge(scene.toString(), "--reference", small.toString(), "--plot", dir.resolve("x.png").toString()),
+                      1, "reference " + small + " is 8x8 but the image is 16x12");
+        Path png = write("fake.pfm", "not an image");
+        assertOneLine(converge(scene.toString(), "--reference", png.toString(), "--plot", dir.resolve("x.png").toString()),
+                      1, png + ": not a PFM image");
+        assertOneLine(converge(scene.toString(), "--reference", dir.resolve("none.pfm").toString(), "--plot",
+                               dir.resolve("x.png").toString()), 1, "no such file");
+        assertOneLine(converge(scene.toString(), "--reference", "closed-form", "--plot", dir.resolve("x.png").toString()),
+                      1, "no closed form: the camera must be orthographic");
+    }
+
+    @Test
+    void badOptionsAreUsageErrors() throws IOException {
+        Path scene = write("spheres.yaml", SPHERES);
+        assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be at least 1, got 0");
+        assertOneLine(converge(scene.toString(), "--time", "-1"), 2, "--time values must be positive seconds");
+        assertOneLine(converge(scene.toString(), "--config", "sampler=sobol"), 2, "unknown sampler 'sobol'; allowed: regular");
+        assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");
+        assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 1, "give a name ending in .png");
+        assertOneLine(converge(dir.resolve("missing.yaml").toString()), 1, "no such file");
+        assertOneLine(converge(), 2, "Missing required parameter: 'SCENE'");
+    }
+
+    private static void assertOneLine(Result r, int code, String fragment) {
+        assertEquals(code, r.code(), r.err());
+        assertEquals(1, r.lines().length, r.err());
+        assertTrue(r.err().contains(fragment), "'" + fragment + "' missing from: " + r.err());
+        assertFalse(r.err().contains("\tat "), r.err());
+    }
+}

@@ -1,0 +1,68 @@
+package raytracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import raytracer.image.ErrorMetrics;
+import raytracer.image.chart.Series;
+
+/** The table, the CSV, the slopes and the chart's curves from a few rows made up for the purpose. */
+class ConvergeReportTest {
+
+    private static ConvergeRow row(String config, int spp, double seconds, double relativeRmse) {
+        return new ConvergeRow(config, spp, "1", seconds, new ErrorMetrics(relativeRmse * 0.5, relativeRmse, 0.01, 0.25, 3, 7, 0.5));
+    }
+
+    /** error = 0.2 t^-0.5 for "a" and 0.1 t^-1 for "b" */
+    private static List<ConvergeRow> rows() {
+        return List.of(row("a", 1, 0.1, 0.2 / Math.sqrt(0.1)), row("a", 4, 0.4, 0.2 / Math.sqrt(0.4)), row("a", 16, 1.6, 0.2 / Math.sqrt(1.6)),
+                       row("b", 1, 0.2, 0.1 / 0.2), row("b", 4, 0.8, 0.1 / 0.8));
+    }
+
+    @Test
+    void slopesOfExactPowerLaws() {
+        Map<String, Double> slopes = ConvergeReport.slopes(rows());
+        assertEquals(-0.5, slopes.get("a"), 1e-12);
+        assertEquals(-1, slopes.get("b"), 1e-12);
+        // one point has no slope
+        assertTrue(ConvergeReport.slopes(List.of(row("c", 1, 1, 1))).isEmpty());
+    }
+
+    @Test
+    void theTableAlignsItsColumnsAndNamesTheWorstPixel() {
+        String[] lines = ConvergeReport.table(rows()).split("\n");
+        assertEquals(6, lines.length);
+        assertTrue(lines[0].startsWith("configuration  spp  light samples  seconds"), lines[0]);
+        assertTrue(lines[1].startsWith("a                1              1    0.100"), lines[1]);
+        assertTrue(lines[1].endsWith("0.2500 at (3, 7)"), lines[1]);
+        for (String line : lines) {
+            assertEquals(lines[0].length(), line.length(), "every line as wide as the header: '" + line + "'");
+        }
+        String black = ConvergeReport.table(List.of(new ConvergeRow("d", 1, "-", 1, new ErrorMetrics(0.5, Double.NaN, 1, 1, 0, 0, 0))));
+        assertTrue(black.split("\n")[1].contains("  -  "), "no relative RMSE against a black reference: " + black);
+    }
+
+    @Test
+    void csvQuotesTheNameAndKeepsFullPrecision() {
+        String[] lines = ConvergeReport.csv(List.of(row("x, \"y\"", 16, 1.25, 0.1))).split("\n");
+        assertEquals("\"x, \"\"y\"\"\",16,1,1.25,0.05,0.1,0.01,0.25,3,7,0.5", lines[1]);
+    }
+
+    @Test
+    void theChartHasACurvePerConfigurationAndAGuide() {
+        List<Series> series = ConvergeReport.chart("t", rows()).series();
+        assertEquals(3, series.size());
+        assertEquals("a", series.get(0).name());
+        assertEquals(3, series.get(0).x().length);
+        Series guide = series.get(2);
+        assertTrue(guide.guide());
+        // through the first point of "a", spanning all times, falling as t^-1/2
+        assertEquals(0.1, guide.x()[0], 0);
+        assertEquals(1.6, guide.x()[1], 0);
+        assertEquals(0.2 / Math.sqrt(0.1), guide.y()[0], 1e-12);
+        assertEquals(0.2 / Math.sqrt(1.6), guide.y()[1], 1e-12);
+    }
+}
