@@ -18,7 +18,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
-import raytracer.core.Light;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.image.AtomicFile;
@@ -72,7 +71,8 @@ final class ConvergeCommand implements Callable<Integer> {
 
     @Option(names = "--reference", paramLabel = "REF",
             description = "auto (default: closed-form when the scene has an exact image, else self), closed-form, self "
-                          + "(the scene rendered at --reference-spp with another seed, cached), or a .pfm file of the image's size.")
+                          + "(the scene rendered at --reference-spp, in two halves with other seeds whose difference measures "
+                          + "its own noise, and cached), or a .pfm file of the image's size.")
     String reference = "auto";
 
     @Option(names = "--reference-spp", paramLabel = "N", description = "Samples per pixel of a self-rendered reference. Default: ${DEFAULT-VALUE}.")
@@ -101,7 +101,7 @@ final class ConvergeCommand implements Callable<Integer> {
     int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--seed", paramLabel = "S",
-            description = "Seed of the measured renders; a self-rendered reference uses its bitwise complement. Default: ${DEFAULT-VALUE}.")
+            description = "Seed of the measured renders; a self-rendered reference uses seeds made from it, never it. Default: ${DEFAULT-VALUE}.")
     long seed = 1;
 
     @Option(names = {"-q", "--quiet"}, description = "No progress, no notes: only the table.")
@@ -142,22 +142,24 @@ final class ConvergeCommand implements Callable<Integer> {
         }
         World base = load(ConvergeConfig.SCENE, err);
         ViewPlane vp = base.viewPlane();
-        Film ref = reference(base, note);
+        ConvergeReference.Image ref = reference(base, note);
         List<ConvergeRow> rows = new ArrayList<>();
         int total = curves.size() * (spp.size() + budgets.size());
         for (ConvergeConfig config : curves) {
-            measure(config, ref, vp.exposure(), rows, total, note);
+            measure(config, ref.film(), vp.exposure(), rows, total, note);
         }
-        spec.commandLine().getOut().print(ConvergeReport.table(rows));
-        ConvergeReport.slopes(rows).forEach((name, slope) -> spec.commandLine().getOut().printf(Locale.ROOT,
+        PrintWriter out = spec.commandLine().getOut();
+        out.print(ConvergeReport.table(rows));
+        ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
             "slope of log error against log seconds, %s: %.2f%n", name, slope));
-        spec.commandLine().getOut().flush();
+        out.println("reference: " + ref.what() + ConvergeReport.noiseNote(ref.noiseRmse(), rows.get(0).error().referenceMean()));
+        out.flush();
         if (csv != null) {
             AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
         }
         String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
                        + " thread" + (threads == 1 ? "" : "s") + ")";
-        ConvergeReport.chart(title, rows).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
+        ConvergeReport.chart(title, rows, ref.noiseRmse()).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
     }
@@ -201,11 +203,14 @@ final class ConvergeCommand implements Callable<Integer> {
         }
     }
 
-    /** The scene with a configuration's overrides and the image size, prepared for rendering. */
-    private World load(ConvergeConfig config, PrintWriter err) throws SceneException {
+    /**
+     * The scene with a configuration's overrides and the image size, prepared for rendering; its
+     * warnings go to {@code warnings} unless that is null.
+     */
+    private World load(ConvergeConfig config, PrintWriter warnings) throws SceneException {
         World world = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
-        if (!quiet && config == ConvergeConfig.SCENE) {
-            world.warnings().forEach(w -> err.println("render converge: warning: " + w));
+        if (!quiet && warnings != null) {
+            world.warnings().forEach(w -> warnings.println("render converge: warning: " + w));
         }
         ViewPlane vp = world.viewPlane();
         if (config.sampler() != null) {
@@ -219,12 +224,12 @@ final class ConvergeCommand implements Callable<Integer> {
         return world;
     }
 
-    private Film reference(World base, PrintWriter note) throws Exception {
+    private ConvergeReference.Image reference(World base, PrintWriter note) throws Exception {
         ViewPlane vp = base.viewPlane();
         if (!List.of("auto", "closed-form", "self").contains(reference)) {
             Film film = ConvergeReference.fromFile(Path.of(reference), vp.hres(), vp.vres());
             note.println("converge: reference: " + reference);
-            return film;
+            return new ConvergeReference.Image(film, Double.NaN, reference);
         }
         if (!reference.equals("self")) {
             var exact = ConvergeReference.closedForm(scene, vp.hres(), vp.vres(), note, reference.equals("closed-form"));
@@ -234,20 +239,15 @@ final class ConvergeCommand implements Callable<Integer> {
         }
         ReferenceCache cache = noCache ? null
             : new ReferenceCache(cacheDir != null ? cacheDir : ReferenceCache.defaultDir(System.getenv(), System.getProperty("user.home")));
-        Film film = ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache,
-                                               (world, f) -> render(world, f, ~seed, "reference"), note);
-        int most = spp.isEmpty() ? referenceSpp : spp.get(spp.size() - 1);
-        note.printf(Locale.ROOT, "converge: the reference's own noise makes an RMSE measured at %d spp about %.1f%% too high%n",
-                    most, 100 * (Math.sqrt(1 + (double) most / referenceSpp) - 1));
-        return film;
+        return ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache, this::render, note);
     }
 
     /** Renders one configuration: a warm-up, then each sample count and each time budget. */
     private void measure(ConvergeConfig config, Film ref, double exposure, List<ConvergeRow> rows, int total, PrintWriter note)
             throws SceneException {
-        World world = load(config, note);
+        World world = load(config, null);
         ViewPlane vp = world.viewPlane();
-        String lights = lightSamples(world);
+        String lights = ConvergeReport.lightSamples(world);
         String name = config.name(Samplers.nameOf(vp.sampler()), lights, world.cutoff());
         int warmSpp = Math.max(WARM_UP_MIN_SPP, spp.isEmpty() ? 1 : spp.get(0));
         Film film = new Film(vp.hres(), vp.vres());
@@ -264,17 +264,6 @@ final class ConvergeCommand implements Callable<Integer> {
             note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,
                         stats.samplesPerPixel(), stats.seconds(), error.relativeRmse());
         }
-    }
-
-    /** The area lights' samples per shaded point as the renderer takes them (rounded for the sampler); "-" without area lights. */
-    static String lightSamples(World world) {
-        TreeSet<Integer> counts = new TreeSet<>();
-        for (Light light : world.lights()) {
-            if (light.hasExtent()) {
-                counts.add(world.viewPlane().sampler().supportedCount(light.sampleCount()));
-            }
-        }
-        return counts.isEmpty() ? "-" : counts.size() == 1 ? counts.first().toString() : counts.first() + "-" + counts.last();
     }
 
     private static World withSamples(World world, int n) {

@@ -6,9 +6,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.function.BiFunction;
+import java.util.OptionalDouble;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.image.ErrorMetrics;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.ClosedFormReader;
@@ -56,7 +57,7 @@ final class ConvergeReference {
      * The scene's exact image, its quadrature error noted on {@code note}; empty when the scene has
      * none, unless {@code required}, when the reader's reason is the exception.
      */
-    static Optional<Film> closedForm(Path scene, int width, int height, PrintWriter note, boolean required)
+    static Optional<Image> closedForm(Path scene, int width, int height, PrintWriter note, boolean required)
             throws SceneException {
         LitPlane exact;
         try {
@@ -84,37 +85,70 @@ final class ConvergeReference {
                     worst == 0 ? "the " + CLOSED_FORM_ORDER / 2 + "x" + CLOSED_FORM_ORDER / 2 + " rule gives the same 32-bit values"
                     : String.format(Locale.ROOT, "the %dx%d rule differs by at most %.2g of the image's mean", CLOSED_FORM_ORDER / 2,
                                     CLOSED_FORM_ORDER / 2, mean > 0 ? worst / mean : worst));
-        return Optional.of(film);
+        return Optional.of(new Image(film, 0, "exact (closed form)"));
+    }
+
+    /** The other seed of a self-rendered reference: {@code seed ^ OTHER_HALF} differs from the reference's seed and from ~seed. */
+    static final long OTHER_HALF = 0x5DEECE66DL;
+
+    /**
+     * A reference and the RMSE of its own noise: 0 for an exact image, NaN when unknown (a file);
+     * {@code what} says what it is, for the table.
+     */
+    record Image(Film film, double noiseRmse, String what) {
     }
 
     /**
-     * The scene rendered at {@code spp} with seed {@code seed}, without a cutoff, read from the
-     * cache when it is there and stored in it when not ({@code cache} null: neither).
+     * The scene rendered without a cutoff in two independent halves of {@code spp / 2} samples,
+     * seeds {@code seed} and {@code seed ^ OTHER_HALF}, averaged; the halves' difference measures the
+     * average's own noise: with independent halves of equal variance, its RMSE is RMSE(a, b) / 2.
+     * Read from the cache when it is there and stored in it when not ({@code cache} null: neither).
      */
-    static Film rendered(Path scene, byte[] sceneBytes, World world, int spp, long seed, ReferenceCache cache,
-                         BiFunction<World, Film, RenderStats> render, PrintWriter note) throws IOException {
-        ViewPlane vp = world.viewPlane().withSamples(spp);
+    static Image rendered(Path scene, byte[] sceneBytes, World world, int spp, long seed, ReferenceCache cache,
+                          Renderings render, PrintWriter note) throws IOException {
+        ViewPlane vp = world.viewPlane().withSamples(Math.max(1, spp / 2));
         world.setViewPlane(vp);
         world.setCutoff(0);
-        String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=" + vp.numSamples() + "\nseed=" + seed
-                          + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n";
+        long other = seed ^ OTHER_HALF;
+        String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
+                          + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n";
+        String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
         Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);
-        if (cached.isPresent() && cached.get().width() == vp.hres() && cached.get().height() == vp.vres()) {
-            note.printf("converge: reference: %s (%d spp, seed %d; reused)%n", file, vp.numSamples(), seed);
-            return cached.get();
+        OptionalDouble noise = file == null ? OptionalDouble.empty() : cache.noise(file);
+        if (cached.isPresent() && noise.isPresent() && cached.get().width() == vp.hres() && cached.get().height() == vp.vres()) {
+            note.printf("converge: reference: %s (%s, seeds %d and %d; reused)%n", file, what, seed, other);
+            return new Image(cached.get(), noise.getAsDouble(), what);
         }
-        note.printf("converge: rendering the reference: %d spp, seed %d, no cutoff%n", vp.numSamples(), seed);
+        note.printf("converge: rendering the reference: 2 x %d spp, seeds %d and %d, no cutoff%n", vp.numSamples(), seed, other);
+        Film a = new Film(vp.hres(), vp.vres());
+        Film b = new Film(vp.hres(), vp.vres());
+        double seconds = render.render(world, a, seed, "reference, half 1 of 2").seconds()
+                         + render.render(world, b, other, "reference, half 2 of 2").seconds();
+        a = scaled(a, vp.exposure());
+        b = scaled(b, vp.exposure());
+        double noiseRmse = ErrorMetrics.compare(a, 1, b).rmse() / 2;
         Film film = new Film(vp.hres(), vp.vres());
-        RenderStats stats = render.apply(world, film);
-        Film scaled = scaled(film, vp.exposure());
-        if (file != null) {
-            cache.store(file, scaled, 1, "reference image of " + scene.toAbsolutePath() + ", rendered by render converge\n" + settings);
-            note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, saved as %s%n", stats.seconds(), file);
-        } else {
-            note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, not saved (--no-cache)%n", stats.seconds());
+        for (int y = 0; y < vp.vres(); y++) {
+            for (int x = 0; x < vp.hres(); x++) {
+                film.set(x, y, (a.get(x, y, 0) + b.get(x, y, 0)) / 2.0, (a.get(x, y, 1) + b.get(x, y, 1)) / 2.0,
+                         (a.get(x, y, 2) + b.get(x, y, 2)) / 2.0);
+            }
         }
-        return scaled;
+        if (file != null) {
+            cache.store(file, film, "reference image of " + scene.toAbsolutePath() + ", rendered by render converge\n" + settings
+                                    + ReferenceCache.NOISE_KEY + noiseRmse + "\n");
+            note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, saved as %s%n", seconds, file);
+        } else {
+            note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, not saved (--no-cache)%n", seconds);
+        }
+        return new Image(film, noiseRmse, what);
+    }
+
+    /** How the command renders: into a film, with a seed, a progress label, returning what it cost. */
+    @FunctionalInterface
+    interface Renderings {
+        RenderStats render(World world, Film film, long seed, String label);
     }
 
     /** The film times {@code exposure}, as a .pfm of it would hold it. */

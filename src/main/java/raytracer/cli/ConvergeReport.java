@@ -5,6 +5,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
+import raytracer.core.Light;
+import raytracer.core.World;
 import raytracer.image.chart.LogLogChart;
 import raytracer.image.chart.Series;
 
@@ -13,6 +16,29 @@ final class ConvergeReport {
     private static final String[] HEADER = {"configuration", "spp", "light samples", "seconds", "RMSE", "rel. RMSE", "rel. MSE", "worst pixel"};
 
     private ConvergeReport() {
+    }
+
+    /** What the table's reader should know of the reference's own noise (an RMSE; 0 exact, NaN unknown). */
+    static String noiseNote(double noise, double referenceMean) {
+        if (Double.isNaN(noise)) {
+            return ", its own noise unknown";
+        }
+        if (noise == 0) {
+            return "";
+        }
+        return String.format(Locale.ROOT, ", its own noise RMSE %.4g%s: errors near it are mostly the reference's", noise,
+                             referenceMean > 0 ? String.format(Locale.ROOT, " (relative %.4g)", noise / referenceMean) : "");
+    }
+
+    /** The area lights' samples per shaded point as the renderer takes them (rounded for the sampler); "-" without area lights. */
+    static String lightSamples(World world) {
+        TreeSet<Integer> counts = new TreeSet<>();
+        for (Light light : world.lights()) {
+            if (light.hasExtent()) {
+                counts.add(world.viewPlane().sampler().supportedCount(light.sampleCount()));
+            }
+        }
+        return counts.isEmpty() ? "-" : counts.size() == 1 ? counts.first().toString() : counts.first() + "-" + counts.last();
     }
 
     /** A text table with a header line, the configuration left-aligned and the figures right-aligned. */
@@ -99,9 +125,10 @@ final class ConvergeReport {
 
     /**
      * The error (relative RMSE; the RMSE when the reference is black) against seconds, one curve
-     * per configuration, and a dashed guide of slope -1/2 through the first curve's first point.
+     * per configuration, a dashed guide of slope -1/2 through the first curve's first point, and,
+     * when {@code referenceNoise} (an RMSE) is positive, a level line at the reference's own noise.
      */
-    static LogLogChart chart(String title, List<ConvergeRow> rows) {
+    static LogLogChart chart(String title, List<ConvergeRow> rows, double referenceNoise) {
         List<Series> series = new ArrayList<>();
         double minSeconds = Double.POSITIVE_INFINITY;
         double maxSeconds = 0;
@@ -118,6 +145,11 @@ final class ConvergeReport {
             double y0 = series.get(0).y()[0];
             series.add(new Series("slope -1/2 (independent samples)", new double[] {minSeconds, maxSeconds},
                                   new double[] {y0 * Math.sqrt(x0 / minSeconds), y0 * Math.sqrt(x0 / maxSeconds)}, true));
+            if (referenceNoise > 0 && Double.isFinite(referenceNoise)) {
+                double level = relative(rows) ? referenceNoise / rows.get(0).error().referenceMean() : referenceNoise;
+                series.add(new Series("the reference's own noise", new double[] {minSeconds, maxSeconds},
+                                      new double[] {level, level}, true));
+            }
         }
         return new LogLogChart(title, "render wall time (s)", yLabel(rows), series);
     }

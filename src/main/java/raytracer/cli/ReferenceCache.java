@@ -9,6 +9,7 @@ import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import raytracer.image.AtomicFile;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
@@ -71,11 +72,34 @@ final class ReferenceCache {
         }
     }
 
-    /** Stores a reference and its description, creating the folder if needed. */
-    void store(Path file, Film film, double exposure, String description) throws IOException {
+    /**
+     * Stores a reference (in .pfm units already) and its description, creating the folder if
+     * needed; the description goes first, so a reference is never found without it.
+     */
+    void store(Path file, Film film, String description) throws IOException {
         Files.createDirectories(dir);
-        ImageWriters.write(film, exposure, file);
-        Path text = file.resolveSibling(file.getFileName().toString().replaceFirst("\\.pfm$", ".txt"));
-        AtomicFile.write(text, out -> out.write(description.getBytes(StandardCharsets.UTF_8)));
+        AtomicFile.write(description(file), out -> out.write(description.getBytes(StandardCharsets.UTF_8)));
+        ImageWriters.write(film, 1, file);
+    }
+
+    /** The RMSE of the reference's own noise, from the {@value #NOISE_KEY} line of its description. */
+    OptionalDouble noise(Path file) {
+        try {
+            for (String line : Files.readAllLines(description(file), StandardCharsets.UTF_8)) {
+                if (line.startsWith(NOISE_KEY)) {
+                    double v = Double.parseDouble(line.substring(NOISE_KEY.length()));
+                    return v >= 0 && Double.isFinite(v) ? OptionalDouble.of(v) : OptionalDouble.empty();
+                }
+            }
+        } catch (IOException | NumberFormatException e) {
+            return OptionalDouble.empty();
+        }
+        return OptionalDouble.empty();
+    }
+
+    static final String NOISE_KEY = "noise-rmse=";
+
+    private static Path description(Path file) {
+        return file.resolveSibling(file.getFileName().toString().replaceFirst("\\.pfm$", ".txt"));
     }
 }

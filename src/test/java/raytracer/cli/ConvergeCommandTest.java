@@ -108,7 +108,9 @@ class ConvergeCommandTest {
                          "--csv", dir.resolve("a.csv").toString(), "--plot", dir.resolve("a.png").toString()};
         Result first = converge(args);
         assertEquals(0, first.code(), first.err());
-        assertTrue(first.err().contains("rendering the reference: 64 spp, seed -2"), first.err());
+        // 64 spp in two halves of 32, which the multi-jittered pattern rounds to 36
+        assertTrue(first.err().contains("rendering the reference: 2 x 36 spp, seeds -2 and " + (-2 ^ ConvergeReference.OTHER_HALF)),
+                   first.err());
         try (Stream<Path> files = Files.list(cache)) {
             List<String> names = files.map(p -> p.getFileName().toString()).sorted().toList();
             assertEquals(2, names.size(), names.toString());

@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import raytracer.core.World;
 import raytracer.image.ErrorMetrics;
+import raytracer.io.scene.SceneLoader;
 import raytracer.image.chart.Series;
 
 /** The table, the CSV, the slopes and the chart's curves from a few rows made up for the purpose. */
@@ -20,6 +22,37 @@ class ConvergeReportTest {
     private static List<ConvergeRow> rows() {
         return List.of(row("a", 1, 0.1, 0.2 / Math.sqrt(0.1)), row("a", 4, 0.4, 0.2 / Math.sqrt(0.4)), row("a", 16, 1.6, 0.2 / Math.sqrt(1.6)),
                        row("b", 1, 0.2, 0.1 / 0.2), row("b", 4, 0.8, 0.1 / 0.8));
+    }
+
+    @Test
+    void theNoteOnTheReferencesNoise() {
+        assertEquals(", its own noise unknown", ConvergeReport.noiseNote(Double.NaN, 0.5));
+        assertEquals("", ConvergeReport.noiseNote(0, 0.5));
+        assertEquals(", its own noise RMSE 0.01000 (relative 0.02000): errors near it are mostly the reference's",
+                     ConvergeReport.noiseNote(0.01, 0.5));
+        assertEquals(", its own noise RMSE 0.01000: errors near it are mostly the reference's", ConvergeReport.noiseNote(0.01, 0));
+    }
+
+    @Test
+    void lightSamplesAreCountedAsTheRendererTakesThem() throws Exception {
+        String scene = """
+            image: {sampler: SAMPLER}
+            lights:
+              - {type: rectangle, corner: [0, 2, 0], edge-a: [1, 0, 0], edge-b: [0, 0, 1], samples: 2}
+              - {type: disk, center: [0, 2, 0], normal: [0, -1, 0], samples: 16}
+              - {type: point, position: [0, 2, 0]}
+            objects:
+              - {type: plane, normal: [0, 1, 0]}
+            """;
+        World jittered = SceneLoader.load("s", scene.replace("SAMPLER", "multi-jittered"));
+        jittered.prepare();
+        assertEquals("4-16", ConvergeReport.lightSamples(jittered), "a square pattern takes 4 samples for 2");
+        World random = SceneLoader.load("s", scene.replace("SAMPLER", "random"));
+        random.prepare();
+        assertEquals("2-16", ConvergeReport.lightSamples(random));
+        World points = SceneLoader.load("s", "lights: [{type: point, position: [0, 2, 0]}]\nobjects: [{type: plane, normal: [0, 1, 0]}]");
+        points.prepare();
+        assertEquals("-", ConvergeReport.lightSamples(points));
     }
 
     @Test
@@ -52,8 +85,8 @@ class ConvergeReportTest {
     }
 
     @Test
-    void theChartHasACurvePerConfigurationAndAGuide() {
-        List<Series> series = ConvergeReport.chart("t", rows()).series();
+    void theChartHasACurvePerConfigurationAndGuides() {
+        List<Series> series = ConvergeReport.chart("t", rows(), Double.NaN).series();
         assertEquals(3, series.size());
         assertEquals("a", series.get(0).name());
         assertEquals(3, series.get(0).x().length);
@@ -64,5 +97,12 @@ class ConvergeReportTest {
         assertEquals(1.6, guide.x()[1], 0);
         assertEquals(0.2 / Math.sqrt(0.1), guide.y()[0], 1e-12);
         assertEquals(0.2 / Math.sqrt(1.6), guide.y()[1], 1e-12);
+        // the reference's own noise, an RMSE of 0.01 against a mean of 0.5, is a level line at 0.02
+        List<Series> withNoise = ConvergeReport.chart("t", rows(), 0.01).series();
+        assertEquals(4, withNoise.size());
+        assertTrue(withNoise.get(3).guide());
+        assertEquals(0.02, withNoise.get(3).y()[0], 1e-15);
+        assertEquals(0.02, withNoise.get(3).y()[1], 1e-15);
+        assertEquals(3, ConvergeReport.chart("t", rows(), 0).series().size(), "an exact reference has no noise to show");
     }
 }

@@ -44,9 +44,14 @@ class ReferenceCacheTest {
         assertTrue(cache.load(file).isEmpty());
         Film film = new Film(3, 2);
         film.set(2, 1, 0.5, 1, 2);
-        cache.store(file, film, 2, "what it is\n");
-        assertEquals(4, cache.load(file).get().get(2, 1, 2), 0);
-        assertEquals("what it is\n", Files.readString(file.resolveSibling(file.getFileName().toString().replace(".pfm", ".txt"))));
+        assertTrue(cache.noise(file).isEmpty());
+        cache.store(file, film, "what it is\n" + ReferenceCache.NOISE_KEY + "0.125\n");
+        assertEquals(2, cache.load(file).get().get(2, 1, 2), 0);
+        assertEquals(0.125, cache.noise(file).getAsDouble(), 0);
+        Path text = file.resolveSibling(file.getFileName().toString().replace(".pfm", ".txt"));
+        assertTrue(Files.readString(text).startsWith("what it is\n"));
+        Files.writeString(text, ReferenceCache.NOISE_KEY + "lots\n");
+        assertTrue(cache.noise(file).isEmpty(), "a damaged description counts as none");
         Files.write(file, new byte[] {'P', 'F', '\n'});
         assertTrue(cache.load(file).isEmpty(), "a damaged file is rendered again, not used");
     }

@@ -11,6 +11,7 @@ import org.jfree.chart.JFreeChart;
 import org.jfree.chart.plot.Plot;
 import org.jfree.chart.title.LegendTitle;
 import org.jfree.chart.ui.RectangleEdge;
+import org.jfree.chart.ui.RectangleInsets;
 import raytracer.image.AtomicFile;
 
 /** What both charts share: a white page, grey grid lines, the legend below, PNG output through a temporary file. */
@@ -25,6 +26,8 @@ final class ChartStyle {
     static JFreeChart chart(String title, Plot plot) {
         JFreeChart chart = new JFreeChart(title, new Font(Font.SANS_SERIF, Font.BOLD, 15), plot, true);
         chart.setBackgroundPaint(Color.WHITE);
+        // room on the right for the last tick label, which is centred on the plot's edge
+        chart.setPadding(new RectangleInsets(8, 8, 8, 24));
         plot.setBackgroundPaint(Color.WHITE);
         LegendTitle legend = chart.getLegend();
         legend.setPosition(RectangleEdge.BOTTOM);

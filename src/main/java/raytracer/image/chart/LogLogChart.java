@@ -21,6 +21,8 @@ import org.jfree.data.xy.XYSeriesCollection;
  */
 public record LogLogChart(String title, String xLabel, String yLabel, List<Series> series) {
     private static final float LINE_WIDTH = 2f;
+    /** Guides are told apart by their dashes: long, short, long-short. */
+    private static final float[][] DASHES = {{8, 5}, {2, 4}, {10, 4, 2, 4}};
 
     public LogLogChart {
         series = List.copyOf(series);
@@ -46,6 +48,7 @@ public record LogLogChart(String title, String xLabel, String yLabel, List<Serie
         XYSeriesCollection data = new XYSeriesCollection();
         XYLineAndShapeRenderer renderer = new XYLineAndShapeRenderer(true, true);
         int measured = 0;
+        int guides = 0;
         for (int i = 0; i < series.size(); i++) {
             Series s = series.get(i);
             XYSeries points = new XYSeries(s.name(), false, true);
@@ -60,7 +63,7 @@ public record LogLogChart(String title, String xLabel, String yLabel, List<Serie
             if (s.guide()) {
                 renderer.setSeriesPaint(i, Palette.GUIDE);
                 renderer.setSeriesStroke(i, new BasicStroke(LINE_WIDTH, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
-                                                            new float[] {6, 4}, 0));
+                                                            DASHES[guides++ % DASHES.length], 0));
                 renderer.setSeriesShapesVisible(i, false);
             } else {
                 renderer.setSeriesPaint(i, Palette.colour(measured++));

@@ -1,0 +1,33 @@
+package raytracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.OptionalInt;
+import org.junit.jupiter.api.Test;
+import raytracer.core.World;
+import raytracer.image.ErrorMetrics;
+import raytracer.io.scene.SceneLoader;
+import raytracer.render.Renderer;
+
+/** A self-rendered reference measures its own noise truly: checked against the exact image of a closed-form scene. */
+class ConvergeReferenceTest {
+
+    @Test
+    void theHalvesDifferenceEstimatesTheReferencesTrueError() throws Exception {
+        Path file = Path.of("scenes", "closed-form-disk.yaml");
+        World world = SceneLoader.load(file, OptionalInt.empty());
+        world.setViewPlane(world.viewPlane().withResolution(24, 24));
+        world.prepare();
+        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), world, 128, 5, null,
+            (w, film, seed, label) -> new Renderer(w, 2, seed).render(film), new PrintWriter(new StringWriter()));
+        var exact = ConvergeReference.closedForm(file, 24, 24, new PrintWriter(new StringWriter()), true).get();
+        double trueRmse = ErrorMetrics.compare(ref.film(), 1, exact.film()).rmse();
+        // 576 pixels: the two estimates of one variance agree to about 10%
+        assertEquals(trueRmse, ref.noiseRmse(), 0.2 * trueRmse, "estimated " + ref.noiseRmse() + ", true " + trueRmse);
+        assertEquals(0, exact.noiseRmse(), 0);
+    }
+}
