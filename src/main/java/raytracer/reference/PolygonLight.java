@@ -5,8 +5,8 @@ import raytracer.math.Vector3D;
 
 /**
  * A planar convex polygon emitting on the side of its normal (e1 x e2 for the vertices in order).
- * Its projected solid angle is Lambert's formula (1760; Arvo, "The irradiance Jacobian for partially
- * occluded polyhedral sources", SIGGRAPH 1994, eq. 1): (1/2) |sum_i Theta_i (n . Gamma_i)|, with
+ * Its projected solid angle is Lambert's formula (1760; as written in Arvo, "The irradiance Jacobian
+ * for partially occluded polyhedral sources", SIGGRAPH 1994): (1/2) |sum_i Theta_i (n . Gamma_i)|, with
  * Theta_i the angle the i-th edge subtends at the point and Gamma_i the unit normal of the plane
  * through the point and that edge. Exact when the whole polygon lies above the point's horizon.
  */
