@@ -16,7 +16,6 @@ import raytracer.materials.Matte;
 import raytracer.materials.Reflective;
 import raytracer.render.RenderStats;
 import raytracer.shapes.Rectangle;
-import raytracer.tracers.Whitted;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
@@ -25,7 +24,7 @@ import raytracer.math.Vector3D;
 import raytracer.render.Renderer;
 import raytracer.samplers.MultiJittered;
 import raytracer.shapes.Plane;
-import raytracer.tracers.RayCast;
+import raytracer.tracers.AreaLighting;
 
 /**
  * Area lights are unbiased: a white Lambertian floor (radiance = E / pi) under a light must average
@@ -43,7 +42,7 @@ class AreaLightTest {
         floor.setMaterial(new Matte(0, 1, RGBColor.WHITE));
         world.addObject(floor);
         world.addLight(light);
-        world.setTracer(RayCast::new);
+        world.setTracer(AreaLighting::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
         new Renderer(world, 2, 7).render(film);
@@ -188,7 +187,7 @@ class AreaLightTest {
             floor.setMaterial(new Matte(0, 1, RGBColor.WHITE));
             world.addObject(floor);
             world.addLight(AreaLight.disk(new Point3D(0, -3 + height, 0), new Vector3D(0, -1, 0), radius, le, RGBColor.WHITE, 16));
-            world.setTracer(Whitted::new);
+            world.setTracer(AreaLighting::new);
             world.setCutoff(cutoffs[k]);
             world.prepare();
             Film film = new Film(SIZE, SIZE);

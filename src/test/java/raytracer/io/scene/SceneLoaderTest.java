@@ -189,7 +189,7 @@ class SceneLoaderTest {
             + "objects:\n  - {type: sphere, center: [0, 0, 0], material: glass}\n"
             + "  - {type: sphere, center: [3, 0, 0], material: brown}\n");
         assertTrue(world.objects().get(0).getMaterial() instanceof raytracer.materials.Dielectric);
-        assertTrue(world.objects().get(1).getMaterial().tracesSecondaryRays());
+        assertTrue(world.objects().get(1).getMaterial() instanceof raytracer.materials.Reflective);
         assertMessage(error("materials:\n  g: {type: dielectric, ior: 0}\n" + "objects: []\n"), "s.yaml:2:", "'ior'");
         assertMessage(error("materials:\n  g: {type: dielectric, absorption: [0, -1, 0]}\nobjects: []\n"), "s.yaml:2:", "negative");
         assertMessage(error("materials:\n  m: {type: reflective, fresnel: exact}\nobjects: []\n"), "s.yaml:2:", "'exact'", "none, schlick");
