@@ -57,14 +57,12 @@ class GlossySamplingTest {
      * of the viewer (alpha from r), in the frame (a, b, r); directions below the surface count
      * only when {@code belowToo}.
      */
-    private static double quadratureAroundMirror(double viewDegrees, double e, boolean belowToo,
+    private static double quadratureAroundMirror(double viewDegrees, double e, boolean belowToo, int steps, int phis,
                                                  Integrand integrand) {
         double theta = Math.toRadians(viewDegrees);
         double[] r = {Math.sin(theta), 0, Math.cos(theta)};
         double[] a = {Math.cos(theta), 0, -Math.sin(theta)};
         double[] b = {0, 1, 0};
-        int steps = 3000;
-        int phis = 720;
         // cos^e(alpha) < exp(-70) beyond 12 / sqrt(e + 1)
         double alphaMax = Math.min(Math.PI / 2, 12 / Math.sqrt(e + 1));
         Vec3 wi = new Vec3();
@@ -120,7 +118,7 @@ class GlossySamplingTest {
         double mean = sum / n;
         double error = Math.sqrt(Math.max(0, sum2 / n - mean * mean) / n);
         // quadrature of f cos(theta_i) L with f = cos^e(alpha)
-        double integral = quadratureAroundMirror(viewDegrees, e, false, (w, cosAlpha) -> Math.pow(cosAlpha, e) * w.z * radiance(w));
+        double integral = quadratureAroundMirror(viewDegrees, e, false, 3000, 720, (w, cosAlpha) -> Math.pow(cosAlpha, e) * w.z * radiance(w));
         assertEquals(integral, mean, 4 * error + 1e-4 * integral, "e=" + e + " view " + viewDegrees + ": " + mean + " +- " + error);
         assertEquals(integral, sumIndependent / n, 4 * error + 1e-4 * integral, "f cos / pdf at the samples");
         assertTrue(error < 0.01 * integral, "the estimate should be tight: " + error + " of " + integral);
@@ -132,7 +130,7 @@ class GlossySamplingTest {
         ShadeRec sr = hit();
         Vec3 wo = viewer(viewDegrees);
         GlossySpecular lobe = new GlossySpecular(0.7, RGBColor.WHITE, e, true);
-        double total = quadratureAroundMirror(viewDegrees, e, true, (w, cosAlpha) -> lobe.pdf(sr, wo, w));
+        double total = quadratureAroundMirror(viewDegrees, e, true, 1000, 360, (w, cosAlpha) -> lobe.pdf(sr, wo, w));
         assertEquals(1, total, 1e-4, "e=" + e);
     }
 
