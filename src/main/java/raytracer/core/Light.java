@@ -27,7 +27,8 @@ public abstract class Light {
 
     /**
      * True for lights with a surface to sample (area lights): only the AreaLighting tracer's
-     * {@code areaLightShade} can take them, and rays can find their surfaces.
+     * {@code areaLightShade} can take them, and traced rays may find their surfaces (when the
+     * scene also shows them as emissive objects).
      */
     public boolean hasExtent() {
         return false;
