@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 import org.yaml.snakeyaml.LoaderOptions;
 import org.yaml.snakeyaml.Yaml;
 import org.yaml.snakeyaml.error.MarkedYAMLException;
@@ -20,11 +21,13 @@ import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.ShadingPass;
+import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
 import raytracer.samplers.Samplers;
+import raytracer.tracers.AreaLighting;
 import raytracer.tracers.RayCast;
 import raytracer.tracers.Whitted;
 
@@ -90,12 +93,6 @@ public final class SceneLoader {
         if (scene.has("environment")) {
             world.setBackground(textures.environment(scene.raw("environment"), "environment"));
         }
-        String tracer = scene.string("tracer", "whitted");
-        switch (tracer) {
-            case "whitted" -> world.setTracer(Whitted::new);
-            case "ray-cast" -> world.setTracer(RayCast::new);
-            default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + tracer + "'; allowed: ray-cast, whitted");
-        }
         if (scene.has("pass")) {
             try {
                 world.setPass(ShadingPass.parse(scene.requiredString("pass")));
@@ -104,9 +101,13 @@ public final class SceneLoader {
             }
         }
         Map<String, Material> materials = readMaterials(source, scene, textures);
-        for (Node light : scene.list("lights")) {
-            world.addLight(LightReader.read(source, light, world));
+        boolean areaLights = false;
+        for (Node node : scene.list("lights")) {
+            Light light = LightReader.read(source, node, world);
+            areaLights |= light.hasExtent();
+            world.addLight(light);
         }
+        world.setTracer(readTracer(source, scene, areaLights));
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");
         }
@@ -131,6 +132,28 @@ public final class SceneLoader {
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
                              image.integer("samples", 4, 1), Samplers.byName(samplerName),
                              image.integer("max-depth", 5, 0), image.number("exposure", 1, 0, true));
+    }
+
+    /**
+     * Suffern's tracers: area-lighting, the default when a light has extent, whitted otherwise, or
+     * ray-cast. Whitted and ray-cast take each light from one direction, so they are refused for a
+     * scene with area lights rather than render it without them.
+     */
+    private static Function<World, Tracer> readTracer(Source source, YamlObject scene, boolean areaLights)
+            throws SceneException {
+        String name = scene.string("tracer", areaLights ? "area-lighting" : "whitted");
+        Function<World, Tracer> tracer = switch (name) {
+            case "area-lighting" -> AreaLighting::new;
+            case "whitted" -> Whitted::new;
+            case "ray-cast" -> RayCast::new;
+            default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + name
+                                          + "'; allowed: area-lighting, ray-cast, whitted");
+        };
+        if (areaLights && !name.equals("area-lighting")) {
+            throw source.error(scene.raw("tracer"), "tracer '" + name + "' cannot sample the scene's area lights; "
+                               + "use area-lighting (the default with area lights; max-depth: 0 for direct light only)");
+        }
+        return tracer;
     }
 
     private static double readCutoff(Source source, YamlObject scene) throws SceneException {

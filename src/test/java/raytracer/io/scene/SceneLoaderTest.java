@@ -64,6 +64,20 @@ class SceneLoaderTest {
         assertTrue(world.objects().get(0).getMaterial() != null, "a default material");
     }
 
+    /** The tracer follows the lights unless the scene names one; whitted and ray-cast cannot take area lights. */
+    @Test
+    void scenesWithAreaLightsGetTheAreaLightingTracer() throws SceneException {
+        assertTrue(SceneLoader.load("s.yaml", BASE).tracer() instanceof raytracer.tracers.Whitted);
+        String area = BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}",
+                                   "{type: disk, center: [0, 5, 0], normal: [0, -1, 0]}");
+        assertTrue(SceneLoader.load("s.yaml", area).tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + area).tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + BASE).tracer() instanceof raytracer.tracers.AreaLighting,
+                   "point lights alone may be sampled too");
+        assertMessage(error("tracer: whitted\n" + area), "s.yaml:1:9:", "'whitted' cannot sample", "area-lighting");
+        assertMessage(error("tracer: ray-cast\n" + area), "s.yaml:1:9:", "'ray-cast' cannot sample", "max-depth: 0");
+    }
+
     @Test
     void jsonIsAccepted() throws SceneException {
         World world = SceneLoader.load("s.json", "{\"image\": {\"width\": 8, \"height\": 8}, \"objects\": "
@@ -125,7 +139,7 @@ class SceneLoaderTest {
         assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "orthographic, pinhole, thin-lens");
         assertMessage(error("camera: {type: orthographic, fov: 30}\n" + BASE), "s.yaml:1:30:", "'fov'", "view-height");
         assertMessage(error("camera: {eye: [0, 0, 0], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "must differ");
-        assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "ray-cast, whitted");
+        assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "area-lighting, ray-cast, whitted");
         assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
         assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
         assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
@@ -189,7 +203,7 @@ class SceneLoaderTest {
             + "objects:\n  - {type: sphere, center: [0, 0, 0], material: glass}\n"
             + "  - {type: sphere, center: [3, 0, 0], material: brown}\n");
         assertTrue(world.objects().get(0).getMaterial() instanceof raytracer.materials.Dielectric);
-        assertTrue(world.objects().get(1).getMaterial().tracesSecondaryRays());
+        assertTrue(world.objects().get(1).getMaterial() instanceof raytracer.materials.Reflective);
         assertMessage(error("materials:\n  g: {type: dielectric, ior: 0}\n" + "objects: []\n"), "s.yaml:2:", "'ior'");
         assertMessage(error("materials:\n  g: {type: dielectric, absorption: [0, -1, 0]}\nobjects: []\n"), "s.yaml:2:", "negative");
         assertMessage(error("materials:\n  m: {type: reflective, fresnel: exact}\nobjects: []\n"), "s.yaml:2:", "'exact'", "none, schlick");
