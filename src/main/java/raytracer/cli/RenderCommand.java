@@ -275,7 +275,10 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--height", height, 1);
         requireAtLeast("--spp", samples, 1);
         requireAtLeast("--max-depth", maxDepth, 0);
-        requireAtLeast("--threads", threads, 1);
+        if (threads < 1 || threads > Renderer.MAX_THREADS) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--threads must be 1 to " + Renderer.MAX_THREADS
+                                                     + ", got " + threads);
+        }
         requireAtLeast("--repeat", repeat, 1);
         if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--cutoff must be in [0, 1), got " + cutoff);

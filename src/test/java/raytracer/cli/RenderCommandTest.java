@@ -252,7 +252,7 @@ class RenderCommandTest {
         String out = dir.resolve("a.png").toString();
         // every bad option value is a usage error: exit code 2 and a pointer to --help
         String[][] cases = {
-            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--max-depth", "-1"},
+            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
             {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--frobnicate", "1"},
         };
@@ -262,6 +262,8 @@ class RenderCommandTest {
             assertEquals(2, r.code(), String.join(" ", c) + ": " + r.err());
             assertTrue(r.err().contains("(see render --help)"), r.err());
         }
+        // a fork/join pool runs at most 32767 threads; the message gives the range
+        assertOneLineError(run("-o", out, "--threads", "2147483647"), "--threads must be 1 to 32767, got 2147483647");
         Result huge = run("-o", out, "--width", "50000", "--height", "50000");
         assertOneLineError(huge, "2500000000 pixels", "more than one image holds");
         assertEquals(2, huge.code());
