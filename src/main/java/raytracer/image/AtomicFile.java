@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.util.concurrent.ThreadLocalRandom;
 
@@ -18,7 +17,7 @@ import java.util.concurrent.ThreadLocalRandom;
  * Writes a file through a temporary sibling and a rename, so readers see either the old file or the
  * complete new one, never a half-written one. The result has the permissions a plainly created file
  * would have (the umask's), or the replaced file's: {@code Files.createTempFile} would make it
- * owner-only.
+ * owner-only. If the program is stopped mid-write, {@link PartialFiles} deletes the temporary file.
  */
 public final class AtomicFile {
 
@@ -53,7 +52,7 @@ public final class AtomicFile {
                 temp = dir.resolve("." + absolute.getFileName() + "."
                         + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + ".partial");
                 try {
-                    stream = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                    stream = PartialFiles.create(temp);
                 } catch (FileAlreadyExistsException taken) {
                     temp = null;
                 }
@@ -70,6 +69,7 @@ public final class AtomicFile {
         } finally {
             if (temp != null) {
                 Files.deleteIfExists(temp);
+                PartialFiles.done(temp);
             }
         }
     }
