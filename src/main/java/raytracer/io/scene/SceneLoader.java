@@ -189,7 +189,10 @@ public final class SceneLoader {
             return new Ambient(0.1, RGBColor.WHITE);
         }
         YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", Set.of("radiance", "color"));
-        return new Ambient(a.number("radiance", 0.1, 0, false), a.color("color", RGBColor.WHITE));
+        double radiance = a.number("radiance", 0.1, 0, false);
+        RGBColor color = a.color("color", RGBColor.WHITE);
+        a.checkEmission("radiance", radiance, "color", color);
+        return new Ambient(radiance, color);
     }
 
     private static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)

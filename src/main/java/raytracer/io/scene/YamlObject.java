@@ -219,6 +219,29 @@ final class YamlObject {
         return new RGBColor(t[0], t[1], t[2]);
     }
 
+    /**
+     * Checks what a light emits: {@code scale} (the value of {@code scaleKey}) times {@code factor},
+     * the brightest channel of its colour ({@code factorName}, read from {@code factorKey}). Above the
+     * largest float the image could only hold infinity. The message points at the scale if given,
+     * else at the factor's key, else at this mapping.
+     */
+    void checkEmission(String scaleKey, double scale, String factorKey, String factorName, double factor)
+            throws SceneException {
+        if (!(scale * factor <= MAX_EMISSION)) {
+            Node where = has(scaleKey) ? raw(scaleKey) : has(factorKey) ? raw(factorKey) : node;
+            throw source.error(where, String.format(java.util.Locale.ROOT, "'%s' x %s in %s must be at most %.6g "
+                + "(the largest value an image holds), got %.6g x %.6g", scaleKey, factorName, what, MAX_EMISSION, scale, factor));
+        }
+    }
+
+    /** Checks {@code scale} times the colour of {@code colorKey}. */
+    void checkEmission(String scaleKey, double scale, String colorKey, RGBColor color) throws SceneException {
+        checkEmission(scaleKey, scale, colorKey, "'" + colorKey + "'", color.max());
+    }
+
+    /** The most a light may emit in one channel: the image holds floats. */
+    static final double MAX_EMISSION = Float.MAX_VALUE;
+
     List<Node> list(String key) throws SceneException {
         Node value = values.get(key);
         if (value == null) {
