@@ -136,6 +136,9 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         try {
             return render();
+        } catch (StackOverflowError e) {
+            throw new IllegalStateException("the recursion went deeper than a worker thread's stack holds; lower the "
+                                            + "scene's max-depth or --max-depth", e);
         } catch (OutOfMemoryError e) {
             // the film and the scene are unreachable now, so there is memory to say so
             throw new IllegalStateException("out of memory for this scene and image size; give Java more heap, e.g. "
@@ -274,11 +277,8 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--width", width, 1);
         requireAtLeast("--height", height, 1);
         requireAtLeast("--spp", samples, 1);
-        requireAtLeast("--max-depth", maxDepth, 0);
-        if (threads < 1 || threads > Renderer.MAX_THREADS) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "--threads must be 1 to " + Renderer.MAX_THREADS
-                                                     + ", got " + threads);
-        }
+        requireWithin("--max-depth", maxDepth, 0, ViewPlane.MAX_DEPTH);
+        requireWithin("--threads", threads, 1, Renderer.MAX_THREADS);
         requireAtLeast("--repeat", repeat, 1);
         if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--cutoff must be in [0, 1), got " + cutoff);
@@ -286,6 +286,12 @@ public final class RenderCommand implements Callable<Integer> {
         if (width != null && height != null && (long) width * height > Film.MAX_PIXELS) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--width x --height is " + (long) width * height
                                                      + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
+        }
+    }
+
+    private void requireWithin(String option, Integer value, int min, int max) {
+        if (value != null && (value < min || value > max)) {
+            throw new CommandLine.ParameterException(spec.commandLine(), option + " must be " + min + " to " + max + ", got " + value);
         }
     }
 

@@ -252,7 +252,7 @@ class RenderCommandTest {
         String out = dir.resolve("a.png").toString();
         // every bad option value is a usage error: exit code 2 and a pointer to --help
         String[][] cases = {
-            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"},
+            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"}, {"--max-depth", "100000"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
             {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--frobnicate", "1"},
         };
@@ -264,6 +264,7 @@ class RenderCommandTest {
         }
         // a fork/join pool runs at most 32767 threads; the message gives the range
         assertOneLineError(run("-o", out, "--threads", "2147483647"), "--threads must be 1 to 32767, got 2147483647");
+        assertOneLineError(run("-o", out, "--max-depth", "1001"), "--max-depth must be 0 to 1000, got 1001");
         Result huge = run("-o", out, "--width", "50000", "--height", "50000");
         assertOneLineError(huge, "2500000000 pixels", "more than one image holds");
         assertEquals(2, huge.code());

@@ -156,7 +156,7 @@ public final class SceneLoader {
         }
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
                              image.integer("samples", 4, 1), Samplers.byName(samplerName),
-                             image.integer("max-depth", 5, 0), image.number("exposure", 1, 0, true));
+                             image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true));
     }
 
     private static double readCutoff(Source source, YamlObject scene) throws SceneException {

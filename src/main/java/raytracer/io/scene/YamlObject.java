@@ -151,15 +151,23 @@ final class YamlObject {
     }
 
     int integer(String key, int fallback, int min) throws SceneException {
+        return integer(key, fallback, min, Integer.MAX_VALUE);
+    }
+
+    /** A whole number from {@code min} to {@code max}. */
+    int integer(String key, int fallback, int min, int max) throws SceneException {
         if (!has(key)) {
             return fallback;
         }
         double v = requiredNumber(key);
-        if (v != Math.rint(v) || Math.abs(v) > Integer.MAX_VALUE) {
+        if (v != Math.rint(v)) {
             throw source.error(raw(key), "'" + key + "' in " + what + " must be a whole number, got " + format(v));
         }
         if (v < min) {
-            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + (long) v);
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + format(v));
+        }
+        if (v > max) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at most " + max + ", got " + format(v));
         }
         return (int) v;
     }

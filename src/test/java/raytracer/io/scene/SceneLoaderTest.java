@@ -111,6 +111,9 @@ class SceneLoaderTest {
         assertMessage(error(BASE.replace("samples: 3", "samples: 0")), "s.yaml:1:41:", "'samples'");
         assertMessage(error(BASE.replace("samples: 3", "samples: 2.5")), "s.yaml:1:41:", "whole number");
         assertMessage(error(BASE.replace("max-depth: 2", "max-depth: -1")), "s.yaml:1:", "'max-depth'");
+        // each level of recursion holds a hit record per worker and stack frames: 100000 ran out of memory
+        assertMessage(error(BASE.replace("max-depth: 2", "max-depth: 100000")), "s.yaml:1:74:",
+                      "'max-depth' in image must be at most 1000, got 100000");
         assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
         assertMessage(error(BASE.replace("sampler: jittered", "sampler: sobol")), "s.yaml:1:", "sobol", "multi-jittered");
         assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, height");
