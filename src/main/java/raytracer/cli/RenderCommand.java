@@ -118,7 +118,7 @@ public final class RenderCommand implements Callable<Integer> {
         CommandLine cli = new CommandLine(new RenderCommand());
         cli.setErr(err);
         cli.setParameterExceptionHandler((ex, a) -> {
-            ex.getCommandLine().getErr().println("render: " + ex.getMessage() + " (see render --help)");
+            ex.getCommandLine().getErr().println("render: error: " + ex.getMessage() + " (see render --help)");
             return 2;
         });
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
@@ -150,7 +150,11 @@ public final class RenderCommand implements Callable<Integer> {
     private int render() throws Exception {
         validateOptions();
         Path out = output != null ? output : Path.of(defaultOutputName());
-        checkWritable(out);
+        String unwritable = whyUnwritable(out);
+        if (unwritable != null) {
+            // a bad -o is a bad option value (exit code 2), found before rendering, not after
+            throw new CommandLine.ParameterException(spec.commandLine(), "cannot write " + out + ": " + unwritable);
+        }
         Aggregation.Mode accelMode = usage(() -> Aggregation.Mode.parse(accel));
         boolean costView = usage(this::parseView);
         ShadingPass shadingPass = pass == null ? null : usage(() -> ShadingPass.parse(pass));
@@ -310,26 +314,26 @@ public final class RenderCommand implements Callable<Integer> {
         return (dot > 0 ? name.substring(0, dot) : name) + ".png";
     }
 
-    /** Fails before rendering, not after, when the image could not be written. */
-    private static void checkWritable(Path out) throws IOException {
+    /** Why the image could not be written to {@code out}, or null if it can be. */
+    private static String whyUnwritable(Path out) {
+        String extensions = String.join(", ", ImageWriters.EXTENSIONS);
         if (Files.isDirectory(out)) {
-            throw new IOException("cannot write " + out + ": it is a directory; give a file name ending in one of "
-                                  + String.join(", ", ImageWriters.EXTENSIONS));
+            return "it is a directory; give a file name ending in one of " + extensions;
         }
         if (!ImageWriters.isSupported(out)) {
-            throw new IOException("cannot write " + out + ": unsupported extension (use one of "
-                                  + String.join(", ", ImageWriters.EXTENSIONS) + ")");
+            return "unsupported extension (use one of " + extensions + ")";
         }
         Path dir = out.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new IOException("cannot write " + out + ": directory " + dir + " does not exist");
+            return "directory " + dir + " does not exist";
         }
         if (!Files.isWritable(dir)) {
-            throw new IOException("cannot write " + out + ": directory " + dir + " is not writable");
+            return "directory " + dir + " is not writable";
         }
-        if (Files.exists(out) && (Files.isDirectory(out) || !Files.isWritable(out))) {
-            throw new IOException("cannot write " + out + ": it is a directory or read-only");
+        if (Files.exists(out) && !Files.isWritable(out)) {
+            return "it is read-only";
         }
+        return null;
     }
 
     private World loadScene() throws SceneException, IOException {

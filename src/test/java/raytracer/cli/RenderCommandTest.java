@@ -49,10 +49,11 @@ class RenderCommandTest {
           - {type: sphere, center: [0, 0.5, 0], radius: 0.5}
         """;
 
-    /** A failure is one readable line on stderr, without a stack trace. */
+    /** A failure is one readable line on stderr, in one format whatever the exit code, without a stack trace. */
     private static void assertOneLineError(Result r, String... fragments) {
         assertTrue(r.code() != 0, "exit code should be non-zero");
         assertEquals(1, r.lines().length, "expected one line, got:\n" + r.err());
+        assertTrue(r.err().startsWith("render: error: "), r.err());
         for (String f : fragments) {
             assertTrue(r.err().contains(f), "'" + f + "' missing from: " + r.err());
         }
@@ -276,8 +277,11 @@ class RenderCommandTest {
         Path file = Files.writeString(dir.resolve("plain.txt"), "x");
         assertOneLineError(run("-o", file.resolve("out.png").toString()), "does not exist");
         assertOneLineError(run("-o", dir.resolve("missing/out.png").toString()), "does not exist");
-        assertOneLineError(run("-o", dir.resolve("out.jpg").toString()), "unsupported", ".png");
-        assertOneLineError(run("-o", dir.toString()), "it is a directory", ".png");
+        // a bad -o is a bad option value like any other: exit code 2 and a pointer to --help
+        for (Result r : new Result[] {run("-o", dir.resolve("out.jpg").toString()), run("-o", dir.toString())}) {
+            assertOneLineError(r, r.err().contains("jpg") ? "unsupported extension" : "it is a directory", ".png", "(see render --help)");
+            assertEquals(2, r.code(), r.err());
+        }
     }
 
     @Test
