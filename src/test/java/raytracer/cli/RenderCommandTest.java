@@ -208,6 +208,18 @@ class RenderCommandTest {
     }
 
     @Test
+    void anEmptySceneRendersWithAWarning() throws IOException {
+        // it rendered a blank image without a word
+        Path s = scene("empty.yaml", "image: {width: 4, height: 4, samples: 1}\nbackground: [0.2, 0.3, 0.4]\nobjects: []\n");
+        Result r = run(s.toString(), "-o", dir.resolve("empty.png").toString());
+        assertEquals(0, r.code(), r.err());
+        assertEquals("render: warning: " + s + ":3:10: the scene has no objects; the image shows only the background",
+                     r.lines()[0]);
+        Result quiet = run(s.toString(), "-o", dir.resolve("empty.png").toString(), "-q");
+        assertEquals("", quiet.err(), "--quiet hides warnings");
+    }
+
+    @Test
     void missingSceneFile() {
         assertOneLineError(run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString()), "nope.yaml");
     }

@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.yaml.snakeyaml.LoaderOptions;
@@ -108,7 +109,11 @@ public final class SceneLoader {
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");
         }
-        for (Node object : scene.list("objects")) {
+        List<Node> objects = scene.list("objects");
+        if (objects.isEmpty()) {
+            world.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
+        }
+        for (Node object : objects) {
             world.addObject(ObjectReader.read(source, object, materials, world, textures));
         }
         return world;
