@@ -39,6 +39,14 @@ public final class AtomicFile {
                             : e instanceof AccessDeniedException ? "permission denied"
                             : e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
             throw new IOException("cannot write " + target + ": " + reason, e);
+        } catch (IOException e) {
+            // the body's own failure, such as ImageIO's "I/O error writing PNG file!" around "File too large"
+            String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+            Throwable cause = e.getCause();
+            if (cause != null && cause.getMessage() != null && !reason.contains(cause.getMessage())) {
+                reason += " (" + cause.getMessage() + ")";
+            }
+            throw new IOException("cannot write " + target + ": " + reason, e);
         }
     }
 

@@ -23,10 +23,11 @@ class AtomicFileTest {
     void aWriteThatFailsHalfwayKeepsTheOldFileAndLeavesNoTemporary() throws IOException {
         Path target = dir.resolve("image.png");
         Files.write(target, new byte[] {9, 9});
-        assertThrows(IOException.class, () -> AtomicFile.write(target, out -> {
+        IOException e = assertThrows(IOException.class, () -> AtomicFile.write(target, out -> {
             out.write(new byte[] {1, 2, 3});
             throw new IOException("disk full");
         }));
+        assertEquals("cannot write " + target + ": disk full", e.getMessage());
         assertArrayEquals(new byte[] {9, 9}, Files.readAllBytes(target));
         try (var files = Files.list(dir)) {
             assertEquals(1, files.count());
