@@ -58,13 +58,13 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
     Integer samples;
 
-    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads. Default: all cores (${DEFAULT-VALUE}).")
+    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Renderer.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--seed", paramLabel = "S", description = "Random seed; the same seed gives the same image. Default: ${DEFAULT-VALUE}.")
     long seed = 1;
 
-    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
+    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays, 0 to " + ViewPlane.MAX_DEPTH + " (overrides the scene).")
     Integer maxDepth;
 
     @Option(names = "--cutoff", paramLabel = "C",
