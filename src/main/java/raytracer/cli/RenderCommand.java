@@ -295,7 +295,8 @@ public final class RenderCommand implements Callable<Integer> {
 
     private void requireWithin(String option, Integer value, int min, int max) {
         if (value != null && (value < min || value > max)) {
-            throw new CommandLine.ParameterException(spec.commandLine(), option + " must be " + min + " to " + max + ", got " + value);
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                                                     option + " must be " + min + " to " + max + ", got " + value);
         }
     }
 

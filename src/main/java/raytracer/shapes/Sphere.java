@@ -16,7 +16,10 @@ public final class Sphere extends GeometricObject {
      * correct bits wherever double-double arithmetic can give them.
      */
     private static final double C_RECOMPUTE = 0x1.0p26 * Rounding.gamma(8);
-    /** The farthest a sphere may reach from the origin: the square of a distance to it stays far below the largest double, 1.8e308. */
+    /**
+     * The farthest a sphere may reach from the origin: the square of a distance to it then stays
+     * far below the largest double, 1.8e308 (radius 1e160 rendered black: r^2 was infinite).
+     */
     static final double MAX_EXTENT = 1e150;
     private final double cx;
     private final double cy;

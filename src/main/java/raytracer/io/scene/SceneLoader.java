@@ -130,7 +130,8 @@ public final class SceneLoader {
         if (bad >= 0) {
             SceneText at = new SceneText(source.name(), text);
             at.forward(text.codePointCount(0, bad));
-            throw source.error(at.getMark(), String.format("character U+%04X is not allowed in a YAML file", text.codePointAt(bad)));
+            throw source.error(at.getMark(),
+                               String.format("character U+%04X is not allowed in a YAML file", text.codePointAt(bad)));
         }
         LoaderOptions options = new LoaderOptions();
         options.setAllowDuplicateKeys(false);

@@ -238,7 +238,8 @@ final class YamlObject {
         if (!(scale * factor <= MAX_EMISSION)) {
             Node where = has(scaleKey) ? raw(scaleKey) : has(factorKey) ? raw(factorKey) : node;
             throw source.error(where, String.format(java.util.Locale.ROOT, "'%s' x %s in %s must be at most %.6g "
-                + "(the largest value an image holds), got %.6g x %.6g", scaleKey, factorName, what, MAX_EMISSION, scale, factor));
+                                                    + "(the largest value an image holds), got %.6g x %.6g",
+                                                    scaleKey, factorName, what, MAX_EMISSION, scale, factor));
         }
     }
 
