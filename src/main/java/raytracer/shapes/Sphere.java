@@ -70,16 +70,17 @@ public final class Sphere extends GeometricObject {
         double lx = fx - s * ray.dx;
         double ly = fy - s * ray.dy;
         double lz = fz - s * ray.dz;
-        double discriminant = radius * radius - (lx * lx + ly * ly + lz * lz);
+        double r2 = radius * radius;
+        double discriminant = r2 - (lx * lx + ly * ly + lz * lz);
         if (!(discriminant >= 0)) {
             return Double.POSITIVE_INFINITY;
         }
         double ff = fx * fx + fy * fy + fz * fz;
-        double c = ff - radius * radius;
+        double c = ff - r2;
         // c, which fixes the near root, cancels when the origin is close to the surface against the
         // radius: 1 unit above a sphere of radius 1e16 no digit was left and the near root was lost
-        if (Math.abs(c) < C_RECOMPUTE * (ff + radius * radius)) {
-            c = Compensated.residual(ray.ox, ray.oy, ray.oz, 0, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
+        if (Math.abs(c) < C_RECOMPUTE * (ff + r2)) {
+            c = exactC(ray);
         }
         // stable pair of roots: q / a and c / q (Numerical Recipes, section 5.6)
         double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
@@ -94,6 +95,11 @@ public final class Sphere extends GeometricObject {
             return tFar;
         }
         return Double.POSITIVE_INFINITY;
+    }
+
+    /** c from the exact o - c (its own method, so that nearestRoot stays small enough to be inlined). */
+    private double exactC(Ray ray) {
+        return Compensated.residual(ray.ox, ray.oy, ray.oz, 0, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
     }
 
     /**
