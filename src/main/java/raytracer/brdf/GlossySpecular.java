@@ -11,15 +11,14 @@ import raytracer.math.Vec3;
  * Phong's specular lobe (report eq. 1, Suffern section 15.3): f = ks cs cos^e(alpha), alpha between
  * wo and the mirror direction r of wi. The report's form is unnormalised; the normalised modified
  * Phong lobe ks (e + 2) / (2 pi) cos^e(alpha) conserves energy and is offered as an option.
+ * Direct light evaluates {@link #f}; glossy reflection traces rays drawn by {@link #sampleF}.
  */
 public final class GlossySpecular implements BRDF {
-    private final double ks;
     private final RGBColor cs;
     private final double exp;
     private final double scale;
 
     public GlossySpecular(double ks, RGBColor cs, double exp, boolean normalized) {
-        this.ks = ks;
         this.cs = cs;
         this.exp = exp;
         this.scale = normalized ? ks * (exp + 2) / (2 * Math.PI) : ks;
@@ -42,45 +41,33 @@ public final class GlossySpecular implements BRDF {
     }
 
     /**
-     * Samples wi around the mirror direction r of wo with density (e + 1) / (2 pi) cos^e(alpha)
-     * (SPEC section 2: phi = 2 pi u, cos(alpha) = (1 - v)^(1/(e+1))), writes it into {@code wi} and
-     * returns f cos(theta_i) / pdf without the colour cs: ks 2 pi / (e + 1) cos(theta_i) for the
-     * report's lobe. A direction below the surface returns 0 and still counts as a sample, which
-     * keeps the estimate of the truncated integral unbiased (brdf-params.md).
+     * Suffern's sample_f (chapter 25): picks wi around the mirror direction r of wo with density
+     * (e + 1) / (2 pi) cos^e(alpha) (phi = 2 pi u, cos(alpha) = (1 - v)^(1/(e+1)); SPEC section 2)
+     * and writes the weight f cos(theta_i) / pdf = ks cs 2 pi / (e + 1) cos(theta_i) for the
+     * report's lobe (cos^e cancels; times (e + 2) / (2 pi) when normalised). A direction below the
+     * surface gives false and a black weight, and still counts as a sample (brdf-params.md).
      */
-    public double sample(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi) {
+    @Override
+    public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
         Vec3 n = sr.normal;
         double nDotWo = n.dot(wo);
+        // r = -wo + 2 (n . wo) n
         double rx = -wo.x + 2 * nDotWo * n.x;
         double ry = -wo.y + 2 * nDotWo * n.y;
         double rz = -wo.z + 2 * nDotWo * n.z;
-        // an orthonormal frame (a, b, r) around the mirror direction
-        double hx = Math.abs(rx) > 0.9 ? 0 : 1;
-        double hy = Math.abs(rx) > 0.9 ? 1 : 0;
-        double ax = hy * rz;
-        double ay = -hx * rz;
-        double az = hx * ry - hy * rx;
-        double len = Math.sqrt(ax * ax + ay * ay + az * az);
-        ax /= len;
-        ay /= len;
-        az /= len;
-        double bx = ry * az - rz * ay;
-        double by = rz * ax - rx * az;
-        double bz = rx * ay - ry * ax;
-        SampleMapping.toHemisphere(u, v, exp, wi);
-        double lx = wi.x;
-        double ly = wi.y;
-        double lz = wi.z;
-        wi.set(lx * ax + ly * bx + lz * rx, lx * ay + ly * by + lz * ry, lx * az + ly * bz + lz * rz);
+        SampleMapping.toHemisphere(u, v, exp, rx, ry, rz, wi);
         double cosI = n.dot(wi);
         if (cosI <= 0) {
-            return 0;
+            weight.setBlack();
+            return false;
         }
         // f / pdf = scale cos^e / ((e + 1) / (2 pi) cos^e)
-        return scale * 2 * Math.PI / (exp + 1) * cosI;
+        weight.set(cs).scale(scale * 2 * Math.PI / (exp + 1) * cosI);
+        return true;
     }
 
-    /** The density of {@link #sample} for wi, over solid angle. */
+    /** The density of {@link #sampleF} for wi, over solid angle: (e + 1) / (2 pi) cos^e(alpha). */
+    @Override
     public double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
         Vec3 n = sr.normal;
         double nDotWo = n.dot(wo);
@@ -88,17 +75,9 @@ public final class GlossySpecular implements BRDF {
         return SampleMapping.hemispherePdf(rDotWi, exp);
     }
 
-    public RGBColor color() {
-        return cs;
-    }
-
     /** A lobe this narrow has no meaningful ambient response; Suffern returns black too. */
     @Override
     public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
         out.setBlack();
-    }
-
-    public double ks() {
-        return ks;
     }
 }

@@ -1,31 +1,49 @@
 package raytracer.brdf;
 
+import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 
 /**
- * A perfect mirror (Suffern, section 24.2): all reflected light leaves along r = -wo + 2 (n . wo) n,
- * scaled by kr cr. It is a delta distribution, so it is sampled, never evaluated.
+ * A perfect mirror (Suffern, section 24.2): all reflected light leaves along the mirror direction
+ * r = -wo + 2 (n . wo) n, scaled by kr cr. Its f is a delta, f = kr cr delta(wi - r) / cos(theta_i),
+ * so it is sampled, never evaluated: {@link #f} and {@link #pdf} are zero for every direction, and
+ * {@link #sampleF} returns r with the weight f cos / pdf = kr cr.
  */
-public final class PerfectSpecular {
-    private final double kr;
-    private final RGBColor cr;
+public final class PerfectSpecular implements BRDF {
+    private final RGBColor reflectance;
 
     public PerfectSpecular(double kr, RGBColor cr) {
-        this.kr = kr;
-        this.cr = cr;
+        this.reflectance = cr.scale(kr);
     }
 
-    /** Writes the mirror direction of {@code wo} about the shading normal into {@code wi}. */
-    public void sampleDirection(ShadeRec sr, Vec3 wo, Vec3 wi) {
+    /** Zero: no finite direction-to-direction value exists for a delta. */
+    @Override
+    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+        out.setBlack();
+    }
+
+    /** Writes the mirror direction of {@code wo} about the shading normal into {@code wi}, weight kr cr; (u, v) is unused. */
+    @Override
+    public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
         Vec3 n = sr.normal;
         double nDotWo = n.dot(wo);
         wi.set(-wo.x + 2 * nDotWo * n.x, -wo.y + 2 * nDotWo * n.y, -wo.z + 2 * nDotWo * n.z);
+        weight.set(reflectance);
+        return true;
     }
 
-    /** The reflected fraction kr cr: radiance along the mirror ray is multiplied by it. */
-    public RGBColor reflectance() {
-        return cr.scale(kr);
+    /** Zero: the chance of picking any given direction other than by {@link #sampleF} is nil. */
+    @Override
+    public double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
+        return 0;
+    }
+
+    /** Zero, as in the book: ambient light is not mirrored. */
+    @Override
+    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+        out.setBlack();
     }
 }

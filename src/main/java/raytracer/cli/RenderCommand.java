@@ -58,13 +58,13 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
     Integer samples;
 
-    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads. Default: all cores (${DEFAULT-VALUE}).")
+    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Renderer.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--seed", paramLabel = "S", description = "Random seed; the same seed gives the same image. Default: ${DEFAULT-VALUE}.")
     long seed = 1;
 
-    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays (overrides the scene).")
+    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays, 0 to " + ViewPlane.MAX_DEPTH + " (overrides the scene).")
     Integer maxDepth;
 
     @Option(names = "--cutoff", paramLabel = "C",
@@ -118,7 +118,7 @@ public final class RenderCommand implements Callable<Integer> {
         CommandLine cli = new CommandLine(new RenderCommand());
         cli.setErr(err);
         cli.setParameterExceptionHandler((ex, a) -> {
-            ex.getCommandLine().getErr().println("render: " + ex.getMessage() + " (see render --help)");
+            ex.getCommandLine().getErr().println("render: error: " + ex.getMessage() + " (see render --help)");
             return 2;
         });
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
@@ -136,6 +136,9 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         try {
             return render();
+        } catch (StackOverflowError e) {
+            throw new IllegalStateException("the recursion went deeper than a worker thread's stack holds; lower the "
+                                            + "scene's max-depth or --max-depth", e);
         } catch (OutOfMemoryError e) {
             // the film and the scene are unreachable now, so there is memory to say so
             throw new IllegalStateException("out of memory for this scene and image size; give Java more heap, e.g. "
@@ -147,7 +150,11 @@ public final class RenderCommand implements Callable<Integer> {
     private int render() throws Exception {
         validateOptions();
         Path out = output != null ? output : Path.of(defaultOutputName());
-        checkWritable(out);
+        String unwritable = whyUnwritable(out);
+        if (unwritable != null) {
+            // a bad -o is a bad option value (exit code 2), found before rendering, not after
+            throw new CommandLine.ParameterException(spec.commandLine(), "cannot write " + out + ": " + unwritable);
+        }
         Aggregation.Mode accelMode = usage(() -> Aggregation.Mode.parse(accel));
         boolean costView = usage(this::parseView);
         ShadingPass shadingPass = pass == null ? null : usage(() -> ShadingPass.parse(pass));
@@ -275,8 +282,8 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--width", width, 1);
         requireAtLeast("--height", height, 1);
         requireAtLeast("--spp", samples, 1);
-        requireAtLeast("--max-depth", maxDepth, 0);
-        requireAtLeast("--threads", threads, 1);
+        requireWithin("--max-depth", maxDepth, 0, ViewPlane.MAX_DEPTH);
+        requireWithin("--threads", threads, 1, Renderer.MAX_THREADS);
         requireAtLeast("--repeat", repeat, 1);
         if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--cutoff must be in [0, 1), got " + cutoff);
@@ -284,6 +291,13 @@ public final class RenderCommand implements Callable<Integer> {
         if (width != null && height != null && (long) width * height > Film.MAX_PIXELS) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--width x --height is " + (long) width * height
                                                      + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
+        }
+    }
+
+    private void requireWithin(String option, Integer value, int min, int max) {
+        if (value != null && (value < min || value > max)) {
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                                                     option + " must be " + min + " to " + max + ", got " + value);
         }
     }
 
@@ -302,26 +316,26 @@ public final class RenderCommand implements Callable<Integer> {
         return (dot > 0 ? name.substring(0, dot) : name) + ".png";
     }
 
-    /** Fails before rendering, not after, when the image could not be written. */
-    private static void checkWritable(Path out) throws IOException {
+    /** Why the image could not be written to {@code out}, or null if it can be. */
+    private static String whyUnwritable(Path out) {
+        String extensions = String.join(", ", ImageWriters.EXTENSIONS);
         if (Files.isDirectory(out)) {
-            throw new IOException("cannot write " + out + ": it is a directory; give a file name ending in one of "
-                                  + String.join(", ", ImageWriters.EXTENSIONS));
+            return "it is a directory; give a file name ending in one of " + extensions;
         }
         if (!ImageWriters.isSupported(out)) {
-            throw new IOException("cannot write " + out + ": unsupported extension (use one of "
-                                  + String.join(", ", ImageWriters.EXTENSIONS) + ")");
+            return "unsupported extension (use one of " + extensions + ")";
         }
         Path dir = out.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            throw new IOException("cannot write " + out + ": directory " + dir + " does not exist");
+            return "directory " + dir + " does not exist";
         }
         if (!Files.isWritable(dir)) {
-            throw new IOException("cannot write " + out + ": directory " + dir + " is not writable");
+            return "directory " + dir + " is not writable";
         }
-        if (Files.exists(out) && (Files.isDirectory(out) || !Files.isWritable(out))) {
-            throw new IOException("cannot write " + out + ": it is a directory or read-only");
+        if (Files.exists(out) && !Files.isWritable(out)) {
+            return "it is read-only";
         }
+        return null;
     }
 
     private World loadScene() throws SceneException, IOException {

@@ -1,13 +1,26 @@
 package raytracer.core;
 
+import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 
-/** A bidirectional transmittance distribution function (Suffern, chapter 27): light through a surface. */
+/**
+ * A bidirectional transmittance distribution function (Suffern, chapter 27): how much of the light
+ * arriving through the surface from wt leaves towards wo. Directions are unit; wo is on the side
+ * the shading normal {@code sr.normal} faces, wt on the other.
+ */
 public interface BTDF {
 
+    /** Writes f_t(wo, wt) into {@code out}; zero for a perfect transmitter, whose delta is sampled, never evaluated. */
+    void f(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb out);
+
     /**
-     * Writes into {@code wt} the direction in which light from {@code wo} continues through the
-     * surface at the hit; returns false when there is none (total internal reflection).
+     * Suffern's sample_f (chapter 27): writes into {@code wt} a direction through the surface for
+     * light leaving towards {@code wo} and into {@code weight} its Monte Carlo weight
+     * f_t cos(theta_t) / pdf, by which the radiance arriving along wt is multiplied. Returns false,
+     * with a black weight, when no light crosses (total internal reflection: the book's tir).
      */
-    boolean sampleDirection(ShadeRec sr, Vec3 wo, Vec3 wt);
+    boolean sampleF(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb weight);
+
+    /** Writes the hemispherical transmittance rho into {@code out}; zero for a perfect transmitter, as in the book. */
+    void rho(ShadeRec sr, Vec3 wo, Rgb out);
 }

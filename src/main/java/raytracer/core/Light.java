@@ -25,16 +25,29 @@ public abstract class Light {
         return true;
     }
 
-    /** True for lights with a surface to sample (area lights); false for points and directions. */
+    /**
+     * True for lights with a surface to sample (area lights): only the AreaLighting tracer's
+     * {@code areaLightShade} can take them, and traced rays may find their surfaces (when the
+     * scene also shows them as emissive objects).
+     */
     public boolean hasExtent() {
         return false;
     }
 
     /**
-     * How many samples this light takes per shaded point: 1 for point and directional lights, the
-     * configured number for area lights (Suffern, chapter 18).
+     * How many samples this light takes per shaded point at most: 1 for point and directional
+     * lights, the configured number for area lights (Suffern, chapter 18).
      */
     public int sampleCount() {
+        return 1;
+    }
+
+    /**
+     * Draws this light's sample pattern for the hit {@code sr} into {@code sr.scratch.lightX} and
+     * {@code lightY} and returns how many samples to take. Lights without extent draw nothing and
+     * take one.
+     */
+    public int generateSamples(ShadeRec sr) {
         return 1;
     }
 
@@ -48,10 +61,20 @@ public abstract class Light {
     }
 
     /**
-     * The Monte Carlo weight of the last sample: the geometry term over the sample's density,
-     * cos(theta_light) / d^2 / pdf_area for an area light; 1 for lights without extent.
+     * The geometric factor of the last sample (Suffern, chapter 18): cos(theta_light) / d^2, which
+     * turns the area measure of an area light into solid angle at the hit; 1 for lights without
+     * extent, whose {@link #L} already is what reaches the hit.
      */
-    public double geometryOverPdf(ShadeRec sr) {
+    public double G(ShadeRec sr) {
+        return 1;
+    }
+
+    /**
+     * The density of the last sample over the light's area (Suffern, chapter 18: 1 / area for
+     * uniform sampling); 1 for lights without extent. The estimate of a light's contribution is
+     * then the book's L f G cos(theta_i) / pdf.
+     */
+    public double pdf(ShadeRec sr) {
         return 1;
     }
 

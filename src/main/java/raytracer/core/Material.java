@@ -2,14 +2,23 @@ package raytracer.core;
 
 import raytracer.math.Rgb;
 
-/** How a surface answers light (Suffern, chapter 14): {@link #shade} writes outgoing radiance. */
+/**
+ * How a surface answers light (Suffern, chapter 14): the radiance leaving a completed hit towards
+ * the viewer, in the book's two forms, one per kind of tracer.
+ */
 public abstract class Material {
 
-    /** Writes into {@code out} the radiance leaving the completed hit {@code sr} towards the viewer. */
+    /**
+     * Suffern's shade (chapters 14 and 24), called by the RayCast and Whitted tracers: writes into
+     * {@code out} the radiance leaving the hit {@code sr}, each light taken from its one direction.
+     */
     public abstract void shade(ShadeRec sr, Rgb out);
 
-    /** True when shading this material traces secondary rays (mirror, glass). */
-    public boolean tracesSecondaryRays() {
-        return false;
-    }
+    /**
+     * Suffern's area_light_shade (chapter 18), called by the AreaLighting tracer: as {@link #shade},
+     * but each light contributes the average of its samples weighted f L G cos(theta_i) / pdf,
+     * which lights with extent need. Secondary rays are traced through the same tracer, so they
+     * are shaded this way too.
+     */
+    public abstract void areaLightShade(ShadeRec sr, Rgb out);
 }

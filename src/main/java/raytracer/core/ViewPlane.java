@@ -5,6 +5,12 @@ package raytracer.core;
  * deepest recursion, and the exposure applied before display encoding.
  */
 public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int maxDepth, double exposure) {
+    /**
+     * The deepest recursion allowed. Each level holds a hit record per worker (about 10 KB: 100000
+     * levels ran out of memory) and three or four stack frames of the worker thread, whose default
+     * stack held 1500 levels of glossy rays through an instance but not 2000 (cold JVM, 2025).
+     */
+    public static final int MAX_DEPTH = 1000;
 
     public ViewPlane {
         if (hres < 1 || vres < 1) {
@@ -13,8 +19,8 @@ public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int
         if (numSamples < 1) {
             throw new IllegalArgumentException("samples per pixel must be at least 1, got " + numSamples);
         }
-        if (maxDepth < 0) {
-            throw new IllegalArgumentException("max depth must be 0 or more, got " + maxDepth);
+        if (maxDepth < 0 || maxDepth > MAX_DEPTH) {
+            throw new IllegalArgumentException("max depth must be 0 to " + MAX_DEPTH + ", got " + maxDepth);
         }
         if (!(exposure > 0) || !Double.isFinite(exposure)) {
             throw new IllegalArgumentException("exposure must be a positive number, got " + exposure);

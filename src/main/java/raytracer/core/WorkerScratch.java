@@ -8,12 +8,14 @@ import raytracer.math.Vec3;
 /**
  * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
  * recursion depth, a shadow ray, the random generator and the sample buffers. Owned by one thread,
- * so nothing on the per-ray path allocates or synchronises. Also counts the rays it traced.
+ * so nothing on the per-ray path allocates or synchronises. Also counts the rays it traced, and
+ * holds the worker's {@link RayTreePolicy}.
  */
 public final class WorkerScratch {
     private final ShadeRec[] shadeRecs;
     private final Ray[] rays;
     private final Rgb[] colors;
+    private final Rgb[] weights;
     public final Ray shadowRay = new Ray();
     /** Colour scratch for one light's incident radiance and the BRDF values that meet it. */
     public final Rgb lightScratch = new Rgb();
@@ -28,6 +30,8 @@ public final class WorkerScratch {
     /** Sample pattern for the area light being shaded. */
     public final double[] lightX;
     public final double[] lightY;
+    /** The passes and the adaptive cutoff, with this worker's path weights. */
+    public final RayTreePolicy policy;
 
     public long primaryRays;
     public long secondaryRays;
@@ -40,10 +44,12 @@ public final class WorkerScratch {
         shadeRecs = new ShadeRec[levels];
         rays = new Ray[levels];
         colors = new Rgb[levels];
+        weights = new Rgb[levels];
         for (int i = 0; i < levels; i++) {
             shadeRecs[i] = new ShadeRec(world, this);
             rays[i] = new Ray();
             colors[i] = new Rgb();
+            weights[i] = new Rgb();
         }
         int n = world.viewPlane().numSamples();
         sampleX = new double[n];
@@ -59,69 +65,7 @@ public final class WorkerScratch {
         environments = new Background[levels];
         patternX = new double[levels][];
         patternY = new double[levels][];
-        weightR = new double[levels];
-        weightG = new double[levels];
-        weightB = new double[levels];
-        weightR[0] = weightG[0] = weightB[0] = 1; // a camera ray carries all of its sample's weight
-        cutoff = world.cutoff();
-        radianceCutoff = world.cutoff() / world.viewPlane().exposure();
-    }
-
-    // ---- adaptive ray-tree depth (Hall and Greenberg 1983) ----
-    /**
-     * Path weight, per channel, of the ray traced at each depth: the product of the factors
-     * (Fresnel fractions, mirror colours, Beer transmittances, glossy weights) that its radiance
-     * will be multiplied by on its way back to the pixel. Depth 0 stays 1; materials set the deeper
-     * slots through {@link #branch} just before they trace.
-     */
-    private final double[] weightR;
-    private final double[] weightG;
-    private final double[] weightB;
-    private final double cutoff;
-    private final double radianceCutoff;
-
-    /**
-     * Sets the weight of a branch traced from {@code depth} as the parent's weight times the
-     * factor (fr, fg, fb) and says whether it is worth tracing: false when every channel of the
-     * weight is below the world's cutoff, so whatever radiance L the branch would bring back
-     * changes the pixel by less than cutoff * L.
-     */
-    public boolean branch(int depth, double fr, double fg, double fb) {
-        double r = weightR[depth] * fr;
-        double g = weightG[depth] * fg;
-        double b = weightB[depth] * fb;
-        weightR[depth + 1] = r;
-        weightG[depth + 1] = g;
-        weightB[depth + 1] = b;
-        return Math.max(r, Math.max(g, b)) >= cutoff;
-    }
-
-    /**
-     * How many of an area light's {@code samples} a hit at {@code depth} takes: all of them for
-     * camera rays, and in proportion to the path weight below (rounded down, at least one) when the
-     * cutoff is on,
-     * since a hit weighing w adds w^2 of its estimate's variance to the pixel. Each count gives an
-     * unbiased estimate; only the noise of faint, deep hits grows.
-     */
-    public int lightSamples(int depth, int samples) {
-        if (cutoff == 0 || depth == 0) {
-            return samples;
-        }
-        return Math.max(1, Math.min(samples, (int) (samples * weight(depth))));
-    }
-
-    /** The largest channel of the path weight of the ray traced at {@code depth}. */
-    public double weight(int depth) {
-        return Math.max(weightR[depth], Math.max(weightG[depth], weightB[depth]));
-    }
-
-    /**
-     * True when radiance {@code (r, g, b)} leaving a hit at {@code depth} would change the pixel by
-     * less than the cutoff (in display units: 1 is white at the image's exposure); the shading
-     * then need not trace the shadow ray that could only confirm it.
-     */
-    public boolean negligible(int depth, double r, double g, double b) {
-        return Math.max(r * weightR[depth], Math.max(g * weightG[depth], b * weightB[depth])) < radianceCutoff;
+        policy = new RayTreePolicy(world, levels);
     }
 
     /** Bounding-volume tests made by all rays of this worker so far. */
@@ -181,5 +125,13 @@ public final class WorkerScratch {
     /** The colour slot for radiance returned from {@code depth}. */
     public Rgb color(int depth) {
         return colors[depth];
+    }
+
+    /**
+     * The colour slot for the weight of a direction sampled by a material at {@code depth} (a
+     * BRDF's or BTDF's sampleF): one per depth, as it is still needed when the traced ray returns.
+     */
+    public Rgb weight(int depth) {
+        return weights[depth];
     }
 }

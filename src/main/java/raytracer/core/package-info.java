@@ -2,8 +2,9 @@
  * The book's abstract types and the objects that tie them together (Suffern, chapters 3 and 14):
  * {@link raytracer.core.World}, {@link raytracer.core.ViewPlane}, {@link raytracer.core.ShadeRec},
  * {@link raytracer.core.GeometricObject}, {@link raytracer.core.Material}, {@link raytracer.core.BRDF},
- * {@link raytracer.core.Light}, {@link raytracer.core.Tracer}, {@link raytracer.core.Camera} and
- * {@link raytracer.core.Sampler}. The families ({@code shapes}, {@code materials}, ...) implement these;
- * the renderer sees only these.
+ * {@link raytracer.core.BTDF}, {@link raytracer.core.Light}, {@link raytracer.core.Tracer},
+ * {@link raytracer.core.Camera} and {@link raytracer.core.Sampler}; and each worker's scratch
+ * ({@link raytracer.core.WorkerScratch}) with its {@link raytracer.core.RayTreePolicy}. The families
+ * ({@code shapes}, {@code materials}, ...) implement these; the renderer sees only these.
  */
 package raytracer.core;

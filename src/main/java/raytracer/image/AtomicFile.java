@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.util.concurrent.ThreadLocalRandom;
 
@@ -18,7 +17,7 @@ import java.util.concurrent.ThreadLocalRandom;
  * Writes a file through a temporary sibling and a rename, so readers see either the old file or the
  * complete new one, never a half-written one. The result has the permissions a plainly created file
  * would have (the umask's), or the replaced file's: {@code Files.createTempFile} would make it
- * owner-only.
+ * owner-only. If the program is stopped mid-write, {@link PartialFiles} deletes the temporary file.
  */
 public final class AtomicFile {
 
@@ -40,6 +39,14 @@ public final class AtomicFile {
                             : e instanceof AccessDeniedException ? "permission denied"
                             : e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
             throw new IOException("cannot write " + target + ": " + reason, e);
+        } catch (IOException e) {
+            // the body's own failure, such as ImageIO's "I/O error writing PNG file!" around "File too large"
+            String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+            Throwable cause = e.getCause();
+            if (cause != null && cause.getMessage() != null && !reason.contains(cause.getMessage())) {
+                reason += " (" + cause.getMessage() + ")";
+            }
+            throw new IOException("cannot write " + target + ": " + reason, e);
         }
     }
 
@@ -53,7 +60,7 @@ public final class AtomicFile {
                 temp = dir.resolve("." + absolute.getFileName() + "."
                         + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + ".partial");
                 try {
-                    stream = Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                    stream = PartialFiles.create(temp);
                 } catch (FileAlreadyExistsException taken) {
                     temp = null;
                 }
@@ -70,6 +77,7 @@ public final class AtomicFile {
         } finally {
             if (temp != null) {
                 Files.deleteIfExists(temp);
+                PartialFiles.done(temp);
             }
         }
     }

@@ -37,8 +37,9 @@ public final class RadianceHdr {
             if (!m.matches()) {
                 throw new IOException(file + ": unsupported orientation (only -Y h +X w)");
             }
-            int height = Integer.parseInt(m.group(1));
-            int width = Integer.parseInt(m.group(2));
+            int height = size(m.group(1), file);
+            int width = size(m.group(2), file);
+            ImageFiles.requireHeap(file, width, height, 12);
             Film film = new Film(width, height);
             byte[] scan = new byte[4 * width];
             for (int y = 0; y < height; y++) {
@@ -95,6 +96,14 @@ public final class RadianceHdr {
                     }
                 }
             }
+        }
+    }
+
+    private static int size(String digits, Path file) throws IOException {
+        try {
+            return Integer.parseInt(digits);
+        } catch (NumberFormatException e) {
+            throw new IOException(file + ": image size " + digits + " is too large", e);
         }
     }
 

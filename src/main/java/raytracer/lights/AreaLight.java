@@ -1,6 +1,7 @@
 package raytracer.lights;
 
 import raytracer.core.Light;
+import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
 import raytracer.math.Rgb;
@@ -8,14 +9,17 @@ import raytracer.math.Vec3;
 
 /**
  * An area light (Suffern, chapter 18): radiance Le leaves one side of a surface. Each shaded point
- * takes {@code samples} points of the surface, uniformly by area (pdf = 1 / area), and weighs each
- * by G / pdf = cos(theta_light) area / d^2, an unbiased estimate of the irradiance integral. Soft
- * shadows follow from the shadow ray of each sample.
+ * takes {@code samples} points of the surface, uniformly by area ({@link #pdf} = 1 / area), and
+ * the AreaLighting tracer's areaLightShade weighs each by Le f G cos(theta_i) / pdf with
+ * {@link #G} = cos(theta_light) / d^2: the average is an unbiased estimate of the integral of
+ * Le f cos(theta_i) over the solid angle the light covers. Soft shadows follow from the shadow ray
+ * of each sample.
  */
 public final class AreaLight extends Light {
     private final Emitter emitter;
     private final RGBColor radiance;
     private final int samples;
+    private final double inverseArea;
 
     AreaLight(Emitter emitter, double ls, RGBColor color, int samples) {
         if (samples < 1) {
@@ -24,6 +28,7 @@ public final class AreaLight extends Light {
         this.emitter = emitter;
         this.radiance = color.scale(ls);
         this.samples = samples;
+        this.inverseArea = 1 / emitter.area();
     }
 
     public static AreaLight rectangle(raytracer.math.Point3D corner, raytracer.math.Vector3D a, raytracer.math.Vector3D b,
@@ -55,6 +60,19 @@ public final class AreaLight extends Light {
         return samples;
     }
 
+    /**
+     * A fresh stratified pattern per light and point from the image's sampler (Suffern, section
+     * 18.5), of as many samples as the ray tree's policy gives a hit at this depth.
+     */
+    @Override
+    public int generateSamples(ShadeRec sr) {
+        Sampler sampler = sr.world.viewPlane().sampler();
+        int n = sampler.supportedCount(sr.scratch.policy.lightSamples(sr.depth, samples));
+        sampler.generate(n, sr.scratch.rng, sr.scratch.lightX, sr.scratch.lightY);
+        return n;
+    }
+
+    /** Samples the emitter: the point and its normal are kept in {@code sr} for {@link #G}. */
     @Override
     public double sample(ShadeRec sr, double u, double v, Vec3 wi) {
         emitter.sample(u, v, sr.lightPoint, sr.lightNormal);
@@ -64,20 +82,32 @@ public final class AreaLight extends Light {
         return distance;
     }
 
-    /** The centre of the emitter, for a single, unsampled direction. */
+    /**
+     * Refused: an area light has no single direction. Suffern's shade would take it as a point of
+     * radiance Le and get the wrong units; its samples need areaLightShade, which the AreaLighting
+     * tracer calls (the scene loader chooses that tracer for scenes with area lights).
+     */
     @Override
     public double getDirection(ShadeRec sr, Vec3 wi) {
-        return sample(sr, 0.5, 0.5, wi);
+        throw new IllegalStateException("an area light is sampled, not seen from one direction: render with the "
+                                        + "AreaLighting tracer (Suffern, chapter 18)");
     }
 
+    /** cos(theta_light) / d^2 for the last sample; 0 when it faces away from the hit. */
     @Override
-    public double geometryOverPdf(ShadeRec sr) {
+    public double G(ShadeRec sr) {
         double dx = sr.lightPoint.x - sr.hitPoint.x;
         double dy = sr.lightPoint.y - sr.hitPoint.y;
         double dz = sr.lightPoint.z - sr.hitPoint.z;
         double d2 = dx * dx + dy * dy + dz * dz;
         double cosLight = -(sr.lightNormal.x * dx + sr.lightNormal.y * dy + sr.lightNormal.z * dz) / Math.sqrt(d2);
-        return cosLight > 0 ? cosLight * emitter.area() / d2 : 0;
+        return cosLight > 0 ? cosLight / d2 : 0;
+    }
+
+    /** 1 / area: every sample is drawn uniformly over the emitter's surface. */
+    @Override
+    public double pdf(ShadeRec sr) {
+        return inverseArea;
     }
 
     @Override

@@ -7,7 +7,7 @@ import raytracer.btdf.PerfectTransmitter;
 import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
-import raytracer.core.ShadingPass;
+import raytracer.core.RayTreePolicy;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
@@ -16,9 +16,10 @@ import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 
 /**
- * Glass (report section 3; Suffern, chapter 28): the exact Fresnel reflectance R splits the light
- * into a mirror ray weighted R and a refracted ray weighted 1 - R (R = 1 past the critical angle),
- * plus Phong highlights from the lights. Beer's law: a hit seen from inside the medium ends a
+ * Glass (report section 3; Suffern, chapter 28; area lights: chapter 18): the exact Fresnel
+ * reflectance R splits the light into a mirror ray weighted R and a refracted ray weighted 1 - R
+ * (R = 1 past the critical angle; the transmitter's sample_f gives that ray and weight), plus
+ * Phong highlights from the lights. Beer's law: a hit seen from inside the medium ends a
  * segment travelled through it, so the radiance found there is multiplied by exp(-sigma_a t), per
  * channel. That covers refracted rays, internal reflections and camera rays starting inside alike.
  *
@@ -29,9 +30,7 @@ import raytracer.math.Vec3;
 public final class Dielectric extends Material {
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
-    private final Lambertian ambient;
-    private final Lambertian diffuse;
-    private final GlossySpecular specular;
+    private final DirectLighting lighting;
     private final PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
     private final PerfectTransmitter transmitter;
     private final RGBColor absorption;
@@ -39,50 +38,74 @@ public final class Dielectric extends Material {
     public Dielectric(double ior, RGBColor absorption, double ks, double exp) {
         this.transmitter = new PerfectTransmitter(ior);
         this.absorption = absorption;
-        this.ambient = new Lambertian(0, RGBColor.BLACK);
-        this.diffuse = new Lambertian(0, RGBColor.BLACK);
-        this.specular = new GlossySpecular(ks, RGBColor.WHITE, exp, false);
+        this.lighting = new DirectLighting(new Lambertian(0, RGBColor.BLACK), new Lambertian(0, RGBColor.BLACK),
+                                           new GlossySpecular(ks, RGBColor.WHITE, exp, false));
     }
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
+        if (!seenFromInside(sr, out)) {
+            lighting.shade(sr, out);
+        }
+        transmitAndReflect(sr, out);
+    }
+
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        if (!seenFromInside(sr, out)) {
+            lighting.areaLightShade(sr, out);
+        }
+        transmitAndReflect(sr, out);
+    }
+
+    /**
+     * Seen from inside, a light outside the body is reached only through the body's own surface,
+     * which casts shadows: every shadow ray would be blocked, so none is traced and the direct
+     * light is black (glass has no diffuse or ambient term, so nothing else is lost). Sets sr.wo.
+     */
+    private static boolean seenFromInside(ShadeRec sr, Rgb out) {
+        if (sr.frontFace || !sr.object.castsShadows()) {
+            return false;
+        }
+        sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+        out.setBlack();
+        return true;
+    }
+
+    /**
+     * Adds the refracted ray's radiance weighted 1 - R and the mirror ray's weighted R (Suffern,
+     * chapter 28), then applies Beer's law to the whole when the hit ends a segment inside.
+     */
+    private void transmitAndReflect(ShadeRec sr, Rgb out) {
         WorkerScratch scratch = sr.scratch;
+        RayTreePolicy policy = scratch.policy;
         // Beer's law: a hit seen from inside ends a segment of length t through the medium
         boolean inside = !sr.frontFace;
         double tr = inside ? Math.exp(-absorption.r() * sr.t) : 1;
         double tg = inside ? Math.exp(-absorption.g() * sr.t) : 1;
         double tb = inside ? Math.exp(-absorption.b() * sr.t) : 1;
-        if (inside && sr.object.castsShadows()) {
-            // Seen from inside, a light outside the body is reached only through the body's own
-            // surface, which casts shadows: every shadow ray would be blocked, so none is traced.
-            // (Glass has no diffuse or ambient term, so nothing else is lost.)
-            sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
-            out.setBlack();
-        } else {
-            DirectLighting.shade(sr, ambient, diffuse, specular, out);
-        }
         int next = sr.depth + 1;
-        ShadingPass pass = sr.world.pass();
         if (next <= sr.world.viewPlane().maxDepth()) {
             double cosI = sr.normal.dot(sr.wo);
             double eta = transmitter.relativeEta(sr);
             Vec3 wi = sr.wi;
-            boolean refracts = transmitter.sampleDirection(sr, sr.wo, wi);
+            Rgb weight = scratch.weight(sr.depth);
+            boolean refracts = transmitter.sampleF(sr, sr.wo, wi, weight);
             // the ablation without angle dependence: all refracted, nothing reflected (but for TIR)
-            double r = !refracts ? 1 : pass.angleDependent() ? Fresnel.dielectric(cosI, 1, 1 / eta) : 0;
+            double r = !refracts ? 1 : policy.angleDependent() ? Fresnel.dielectric(cosI, 1, 1 / eta) : 0;
+            double t = !refracts ? 0 : policy.angleDependent() ? weight.r : 1; // = 1 - r
             Rgb incoming = scratch.color(next);
-            // the refracted part, 1 - R (wi holds its direction); the branch's weight includes the
+            // the refracted part (wi holds its direction); the branch's weight includes the
             // transmittance of the segment that ended here
-            double t = 1 - r;
-            if (r < 1 && pass.refraction(sr.depth) && scratch.branch(sr.depth, t * tr, t * tg, t * tb)) {
-                trace(sr, wi, next, scratch, incoming, null);
+            if (r < 1 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t * tr, t * tg, t * tb)) {
+                trace(sr, wi, next, scratch, incoming, reflectionMap);
                 out.addProduct(incoming, RGBColor.WHITE, t);
             }
             // the mirror part, R (all of it under total internal reflection)
-            if (r > 0 && pass.reflection(sr.depth) && scratch.branch(sr.depth, r * tr, r * tg, r * tb)) {
-                mirror.sampleDirection(sr, sr.wo, wi);
-                trace(sr, wi, next, scratch, incoming, pass.magentaReflection(sr.depth) ? Reflective.MAGENTA : reflectionMap);
-                out.addProduct(incoming, RGBColor.WHITE, r);
+            if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r * tr, r * tg, r * tb)) {
+                mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
+                trace(sr, wi, next, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+                out.addProduct(incoming, weight, r);
             }
         }
         if (inside) {
@@ -92,10 +115,10 @@ public final class Dielectric extends Material {
         }
     }
 
-    private void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out, Background environment) {
+    private static void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out, Background environment) {
         Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
         scratch.secondaryRays++;
-        scratch.setEnvironment(depth, environment != null ? environment : reflectionMap);
+        scratch.setEnvironment(depth, environment);
         sr.world.tracer().traceRay(ray, depth, scratch, out);
     }
 
@@ -107,10 +130,5 @@ public final class Dielectric extends Material {
     /** The index of refraction inside the surface (outside is vacuum). */
     public double ior() {
         return transmitter.ior();
-    }
-
-    @Override
-    public boolean tracesSecondaryRays() {
-        return true;
     }
 }

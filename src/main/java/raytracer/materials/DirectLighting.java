@@ -2,6 +2,7 @@ package raytracer.materials;
 
 import raytracer.core.BRDF;
 import raytracer.core.Light;
+import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Ray;
@@ -9,74 +10,110 @@ import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 
 /**
- * The direct-lighting sum shared by Matte, Phong and Reflective (Suffern, listing 14.13):
- * L = rho_a La + sum over lights of (f_d + f_s) L_i (n . wi), each light skipped when it is behind
- * the surface or a shadow ray finds an occluder.
+ * The direct light of a lit material, ambient plus a diffuse and an optional specular lobe, in the
+ * book's two forms: {@link #shade} takes each light from its one direction (Suffern, chapters 14
+ * and 15: L = rho_a La + sum over lights of f L cos(theta_i)), {@link #areaLightShade} averages
+ * each light's samples (chapter 18: f L G cos(theta_i) / pdf, with G = pdf = 1 for lights without
+ * extent, so both give the same for them). A light is skipped when it is behind the surface or a
+ * shadow ray finds an occluder.
  */
 final class DirectLighting {
-    private DirectLighting() {
+
+    /** Which lobes a light sample lights, and how. */
+    enum Terms {
+        /** (f_d + f_s) cos(theta_i), the integrand of the reflection equation. */
+        PHYSICAL,
+        /**
+         * The report's quirks (brdf-params.md), for its figure 2's brightness: f_d pi cos(theta_i)
+         * + f_s, the diffuse term without its 1/pi and the specular one without cos(theta_i).
+         */
+        REPORT,
+        /**
+         * As PHYSICAL, but lights with extent light the diffuse lobe only: a glossy material's traced
+         * rays find their surfaces and bring their highlight (SPEC section 2; report figure 1b).
+         */
+        GLOSSY
     }
 
-    /** Writes the reflected direct radiance into {@code out}; {@code specular} may be null. */
-    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, Rgb out) {
-        shade(sr, ambient, diffuse, specular, false, out);
+    private final BRDF ambient;
+    private final BRDF diffuse;
+    private final BRDF specular;
+    private final Terms terms;
+
+    /** {@code specular} may be null (a matte surface). */
+    DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms) {
+        this.ambient = ambient;
+        this.diffuse = diffuse;
+        this.specular = specular;
+        this.terms = terms;
+    }
+
+    DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular) {
+        this(ambient, diffuse, specular, Terms.PHYSICAL);
+    }
+
+    /** Suffern's shade: writes into {@code out} the ambient term plus each light's, from its one direction. */
+    void shade(ShadeRec sr, Rgb out) {
+        if (!ambient(sr, out)) {
+            return;
+        }
+        for (Light light : sr.world.lights()) {
+            addSample(sr, light, light.getDirection(sr, sr.wi), specular, 1, 1, out);
+        }
     }
 
     /**
-     * As above; {@code seedCompatible} reproduces the report's two quirks (brdf-params.md): the
-     * diffuse term without its 1/pi and the specular term without cos(theta_i).
+     * Suffern's area_light_shade: writes into {@code out} the ambient term plus, for each light, the
+     * average over its samples of f L G cos(theta_i) / pdf (one sample for lights without extent).
      */
-    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, boolean seedCompatible, Rgb out) {
-        shade(sr, ambient, diffuse, specular, seedCompatible, true, out);
+    void areaLightShade(ShadeRec sr, Rgb out) {
+        if (!ambient(sr, out)) {
+            return;
+        }
+        WorkerScratch scratch = sr.scratch;
+        Vec3 wi = sr.wi;
+        for (Light light : sr.world.lights()) {
+            if (!light.mayIlluminate(sr)) {
+                continue; // every sample would weigh nothing: draw none
+            }
+            int n = light.generateSamples(sr);
+            BRDF lobe = terms == Terms.GLOSSY && light.hasExtent() ? null : specular;
+            for (int s = 0; s < n; s++) {
+                double distance = light.sample(sr, scratch.lightX[s], scratch.lightY[s], wi);
+                double g = light.G(sr) / light.pdf(sr);
+                if (g > 0) {
+                    addSample(sr, light, distance, lobe, g, 1.0 / n, out);
+                }
+            }
+        }
     }
 
     /**
-     * As above; without {@code specularFromAreaLights} area lights add only their diffuse term,
-     * for materials whose traced glossy rays already find the lights' surfaces (SPEC section 2).
+     * Sets sr.wo and writes the ambient term rho_a La into {@code out}; false, with {@code out}
+     * black, when the pass hides this hit's direct light.
      */
-    static void shade(ShadeRec sr, BRDF ambient, BRDF diffuse, BRDF specular, boolean seedCompatible,
-                      boolean specularFromAreaLights, Rgb out) {
+    private boolean ambient(ShadeRec sr, Rgb out) {
         WorkerScratch scratch = sr.scratch;
         Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
-        if (!sr.world.pass().direct(sr.depth)) {
+        if (!scratch.policy.showsDirect(sr.depth)) {
             out.setBlack();
-            return;
+            return false;
         }
         Rgb f = scratch.brdfScratch;
         Rgb incident = scratch.lightScratch;
-
         ambient.rho(sr, wo, f);
         sr.world.ambient().L(sr, incident);
         out.setBlack().addProduct(f, incident, 1);
-
-        Vec3 wi = sr.wi;
-        for (Light light : sr.world.lights()) {
-            int n = light.sampleCount();
-            boolean sampled = light.hasExtent();
-            if (sampled && !light.mayIlluminate(sr)) {
-                continue; // every sample would weigh nothing: draw none
-            }
-            if (sampled) {
-                // a fresh stratified pattern per light and point (Suffern, section 18.5)
-                n = sr.world.viewPlane().sampler().supportedCount(scratch.lightSamples(sr.depth, n));
-                sr.world.viewPlane().sampler().generate(n, scratch.rng, scratch.lightX, scratch.lightY);
-            }
-            for (int s = 0; s < n; s++) {
-                double u = sampled ? scratch.lightX[s] : 0.5;
-                double v = sampled ? scratch.lightY[s] : 0.5;
-                BRDF lobe = sampled && !specularFromAreaLights ? null : specular;
-                addSample(sr, light, light.sample(sr, u, v, wi), diffuse, lobe, seedCompatible, 1.0 / n, out);
-            }
-        }
+        return true;
     }
 
     /**
-     * Adds one light sample in direction sr.wi, weighted by {@code weight} (1 / samples). The
-     * unshadowed contribution is computed first: when it could not change the pixel by the world's
-     * cutoff (Hall and Greenberg 1983), the shadow ray is not traced and the sample is left out.
+     * Adds f L g cos(theta_i) {@code weight} for the light sample in direction sr.wi, where g is
+     * G / pdf and {@code weight} 1 / samples. The unshadowed contribution is computed first: when
+     * it could not change the pixel by the cutoff (Hall and Greenberg 1983), the shadow ray is not
+     * traced and the sample is left out.
      */
-    private static void addSample(ShadeRec sr, Light light, double distance, BRDF diffuse, BRDF specular,
-                                  boolean seedCompatible, double weight, Rgb out) {
+    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, Rgb out) {
         WorkerScratch scratch = sr.scratch;
         Vec3 wi = sr.wi;
         double nDotWi = sr.normal.dot(wi);
@@ -84,34 +121,22 @@ final class DirectLighting {
         if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
             return;
         }
-        double g = light.geometryOverPdf(sr);
-        if (!(g > 0)) {
-            return;
-        }
         Rgb f = scratch.brdfScratch;
         Rgb incident = scratch.lightScratch;
         diffuse.f(sr, sr.wo, wi, f);
         light.L(sr, incident);
-        if (seedCompatible) {
-            // the report's quirks: diffuse without 1/pi, specular without cos(theta_i)
+        if (terms == Terms.REPORT) {
             f.scale(Math.PI * nDotWi);
-            if (specular != null) {
-                Rgb fs = scratch.specularScratch;
-                specular.f(sr, sr.wo, wi, fs);
-                f.add(fs);
-            }
+            addLobe(sr, lobe, f);
         } else {
-            if (specular != null) {
-                Rgb fs = scratch.specularScratch;
-                specular.f(sr, sr.wo, wi, fs);
-                f.add(fs);
-            }
+            addLobe(sr, lobe, f);
             f.scale(nDotWi);
         }
         // f L g, with f now holding the factor that reaches the viewer, is this sample's estimate of
         // the light's whole contribution; one left out below the cutoff loses less than
         // cutoff / samples, so a hit loses less than the cutoff per light
-        if (scratch.negligible(sr.depth, f.r * incident.r * g, f.g * incident.g * g, f.b * incident.b * g)) {
+        RayTreePolicy policy = scratch.policy;
+        if (policy.negligible(sr.depth, f.r * incident.r * g, f.g * incident.g * g, f.b * incident.b * g)) {
             return;
         }
         if (light.castsShadows()) {
@@ -121,5 +146,13 @@ final class DirectLighting {
             }
         }
         out.addProduct(f, incident, g * weight);
+    }
+
+    private static void addLobe(ShadeRec sr, BRDF lobe, Rgb f) {
+        if (lobe != null) {
+            Rgb fs = sr.scratch.specularScratch;
+            lobe.f(sr, sr.wo, sr.wi, fs);
+            f.add(fs);
+        }
     }
 }

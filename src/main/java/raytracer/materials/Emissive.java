@@ -24,4 +24,10 @@ public final class Emissive extends Material {
             out.setBlack();
         }
     }
+
+    /** The same: what an emitter shows does not depend on how the lights are sampled. */
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        shade(sr, out);
+    }
 }

@@ -10,21 +10,17 @@ import raytracer.math.Rgb;
 
 /**
  * A measured material as a fitted model (report section 2.2, figure 2): Lambertian rho_d / pi plus
- * a Ward, Ward-Duer or Blinn-Phong lobe, lit by the scene's lights, with an ambient term ka rho_d.
+ * a Ward, Ward-Duer or Blinn-Phong lobe, lit by the scene's lights (area lights: Suffern, chapter
+ * 18), with an ambient term ka rho_d.
  * {@code seedCompatible} reproduces the report's own shading (no 1/pi, no cos on the lobe) so that
  * figure 2's brightness can be matched.
  */
 public final class Fitted extends Material {
-    private final Lambertian ambient;
-    private final Lambertian diffuse;
-    private final BRDF specular;
-    private final boolean seedCompatible;
+    private final DirectLighting lighting;
 
     public Fitted(RGBColor rhoD, BRDF specular, double ka, boolean seedCompatible) {
-        this.ambient = new Lambertian(ka, rhoD);
-        this.diffuse = new Lambertian(1, rhoD);
-        this.specular = specular;
-        this.seedCompatible = seedCompatible;
+        this.lighting = new DirectLighting(new Lambertian(ka, rhoD), new Lambertian(1, rhoD), specular,
+                                           seedCompatible ? DirectLighting.Terms.REPORT : DirectLighting.Terms.PHYSICAL);
     }
 
     public static Fitted of(FittedPreset preset, double ka, boolean seedCompatible) {
@@ -33,6 +29,11 @@ public final class Fitted extends Material {
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
-        DirectLighting.shade(sr, ambient, diffuse, specular, seedCompatible, out);
+        lighting.shade(sr, out);
+    }
+
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        lighting.areaLightShade(sr, out);
     }
 }

@@ -15,19 +15,18 @@ import raytracer.math.Vec3;
 
 /**
  * Glossy Phong (report section 2.1, figure 1b; Suffern, chapter 25): the diffuse part is lit
- * directly, while the specular part traces {@code samples} rays around the mirror direction,
- * distributed as cos^e, so that the whole scene, area lights included, is reflected blurred. Area
- * lights are therefore not sampled for the specular term; point and directional lights, which no
- * ray can hit, still give their highlight directly.
+ * directly, while the specular part traces {@code samples} rays around the mirror direction, drawn
+ * by the lobe's sample_f, so that the whole scene, area lights included, is reflected blurred.
+ * Area lights are therefore not sampled for the specular term ({@link DirectLighting.Terms#GLOSSY});
+ * point and directional lights, which no ray can hit, still give their highlight directly.
  */
 public final class GlossyReflector extends Material {
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
-    private Lambertian ambient;
-    private Lambertian diffuse;
     private final double ka;
     private final double kd;
     private final GlossySpecular specular;
+    private DirectLighting lighting;
     private final int samples;
 
     public GlossyReflector(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, int samples,
@@ -37,65 +36,72 @@ public final class GlossyReflector extends Material {
         }
         this.ka = ka;
         this.kd = kd;
-        this.ambient = new Lambertian(ka, cd);
-        this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, normalized);
+        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular, DirectLighting.Terms.GLOSSY);
         this.samples = samples;
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
-        this.ambient = new Lambertian(ka, texture);
-        this.diffuse = new Lambertian(kd, texture);
+        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular,
+                                           DirectLighting.Terms.GLOSSY);
     }
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
-        DirectLighting.shade(sr, ambient, diffuse, specular, false, false, out);
+        lighting.shade(sr, out);
+        reflectGlossy(sr, out);
+    }
+
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        lighting.areaLightShade(sr, out);
+        reflectGlossy(sr, out);
+    }
+
+    /**
+     * Adds the average over the glossy rays of the radiance each brings back times its weight
+     * f cos(theta_i) / pdf (Suffern, chapter 25).
+     */
+    private void reflectGlossy(ShadeRec sr, Rgb out) {
         int next = sr.depth + 1;
-        if (next > sr.world.viewPlane().maxDepth() || !sr.world.pass().reflection(sr.depth)) {
+        WorkerScratch scratch = sr.scratch;
+        if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {
             return;
         }
-        WorkerScratch scratch = sr.scratch;
         Sampler sampler = sr.world.viewPlane().sampler();
         int n = sampler.supportedCount(samples);
         double[] xs = scratch.patternX(sr.depth, n);
         double[] ys = scratch.patternY(sr.depth);
         sampler.generate(n, scratch.rng, xs, ys);
         Vec3 wi = sr.wi;
-        RGBColor cs = specular.color();
+        Rgb weight = scratch.weight(sr.depth);
         Rgb incoming = scratch.color(next);
         double r = 0;
         double g = 0;
         double b = 0;
         for (int i = 0; i < n; i++) {
-            double weight = specular.sample(sr, sr.wo, xs[i], ys[i], wi);
-            if (weight <= 0) {
+            if (!specular.sampleF(sr, sr.wo, xs[i], ys[i], wi, weight)) {
                 continue; // below the surface: zero, but it counts in the average
             }
-            if (!scratch.branch(sr.depth, weight * cs.r() / n, weight * cs.g() / n, weight * cs.b() / n)) {
+            if (!scratch.policy.recordBranchWeight(sr.depth, weight.r / n, weight.g / n, weight.b / n)) {
                 continue;
             }
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
             scratch.secondaryRays++;
             scratch.setEnvironment(next, reflectionMap);
             sr.world.tracer().traceRay(ray, next, scratch, incoming);
-            r += incoming.r * weight;
-            g += incoming.g * weight;
-            b += incoming.b * weight;
+            r += incoming.r * weight.r;
+            g += incoming.g * weight.g;
+            b += incoming.b * weight.b;
         }
-        out.r += r * cs.r() / n;
-        out.g += g * cs.g() / n;
-        out.b += b * cs.b() / n;
+        out.r += r / n;
+        out.g += g / n;
+        out.b += b / n;
     }
 
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
-    }
-
-    @Override
-    public boolean tracesSecondaryRays() {
-        return true;
     }
 }

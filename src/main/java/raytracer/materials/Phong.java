@@ -8,30 +8,32 @@ import raytracer.core.Texture;
 import raytracer.math.RGBColor;
 import raytracer.math.Rgb;
 
-/** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5). */
+/** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18). */
 public final class Phong extends Material {
-    private Lambertian ambient;
-    private Lambertian diffuse;
     private final double ka;
     private final double kd;
     private final GlossySpecular specular;
+    private DirectLighting lighting;
 
     public Phong(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, boolean normalized) {
         this.ka = ka;
         this.kd = kd;
-        this.ambient = new Lambertian(ka, cd);
-        this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, normalized);
+        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
-        this.ambient = new Lambertian(ka, texture);
-        this.diffuse = new Lambertian(kd, texture);
+        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
-        DirectLighting.shade(sr, ambient, diffuse, specular, out);
+        lighting.shade(sr, out);
+    }
+
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        lighting.areaLightShade(sr, out);
     }
 }

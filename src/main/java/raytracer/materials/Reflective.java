@@ -5,8 +5,8 @@ import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
 import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
-import raytracer.core.ShadingPass;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
@@ -15,23 +15,20 @@ import raytracer.math.Ray;
 import raytracer.math.Rgb;
 
 /**
- * Phong shading plus a perfect mirror term (Suffern, section 24.3): the radiance traced along the
- * mirror direction, scaled by kr cr, is added to the direct light. With {@code schlick} the
- * reflected fraction grows towards grazing angles by Schlick's Fresnel approximation with kr as
- * the reflectance at normal incidence (report section 3: the brown mirror sphere with 0.5).
+ * Phong shading plus a perfect mirror term (Suffern, section 24.3; area lights: chapter 18): the
+ * radiance traced along the mirror direction, scaled by the mirror's weight kr cr, is added to the
+ * direct light. With {@code schlick} the reflected fraction grows towards grazing angles by
+ * Schlick's Fresnel approximation with kr as the reflectance at normal incidence (report section
+ * 3: the brown mirror sphere with 0.5); the mirror's weight is then cr alone.
  */
 public final class Reflective extends Material {
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
-    /** The environment of the magenta-reflection pass (report figures 4c and 6c). */
-    static final Background MAGENTA = (ray, out) -> out.set(1, 0, 1);
-    private Lambertian ambient;
-    private Lambertian diffuse;
     private final double ka;
     private final double kd;
     private final GlossySpecular specular;
+    private DirectLighting lighting;
     private final PerfectSpecular mirror;
-    private final RGBColor reflectance;
     private final double kr;
     private final boolean schlick;
 
@@ -41,48 +38,52 @@ public final class Reflective extends Material {
         this.schlick = schlick;
         this.ka = ka;
         this.kd = kd;
-        this.ambient = new Lambertian(ka, cd);
-        this.diffuse = new Lambertian(kd, cd);
         this.specular = new GlossySpecular(ks, cs, exp, false);
-        this.mirror = new PerfectSpecular(kr, cr);
-        this.reflectance = schlick ? cr : mirror.reflectance();
+        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
+        this.mirror = new PerfectSpecular(schlick ? 1 : kr, cr);
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
-        this.ambient = new Lambertian(ka, texture);
-        this.diffuse = new Lambertian(kd, texture);
+        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
     @Override
     public void shade(ShadeRec sr, Rgb out) {
-        DirectLighting.shade(sr, ambient, diffuse, specular, out);
+        lighting.shade(sr, out);
+        reflect(sr, out);
+    }
+
+    @Override
+    public void areaLightShade(ShadeRec sr, Rgb out) {
+        lighting.areaLightShade(sr, out);
+        reflect(sr, out);
+    }
+
+    /** Adds the radiance along the mirror direction, times the mirror's weight and the Fresnel fraction. */
+    private void reflect(ShadeRec sr, Rgb out) {
         int next = sr.depth + 1;
-        ShadingPass pass = sr.world.pass();
-        if (next > sr.world.viewPlane().maxDepth() || !pass.reflection(sr.depth)) {
+        WorkerScratch scratch = sr.scratch;
+        RayTreePolicy policy = scratch.policy;
+        if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
             return;
         }
-        WorkerScratch scratch = sr.scratch;
-        mirror.sampleDirection(sr, sr.wo, sr.wi);
-        double fraction = schlick && pass.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
-        if (!scratch.branch(sr.depth, reflectance.r() * fraction, reflectance.g() * fraction, reflectance.b() * fraction)) {
+        Rgb weight = scratch.weight(sr.depth);
+        mirror.sampleF(sr, sr.wo, 0, 0, sr.wi, weight);
+        double fraction = schlick && policy.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
+        if (!policy.recordBranchWeight(sr.depth, weight.r * fraction, weight.g * fraction, weight.b * fraction)) {
             return;
         }
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
         scratch.secondaryRays++;
-        scratch.setEnvironment(next, pass.magentaReflection(sr.depth) ? MAGENTA : reflectionMap);
+        scratch.setEnvironment(next, policy.reflectedEnvironment(sr.depth, reflectionMap));
         Rgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
-        out.addProduct(incoming, reflectance, fraction);
+        out.addProduct(incoming, weight, fraction);
     }
 
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
-    }
-
-    @Override
-    public boolean tracesSecondaryRays() {
-        return true;
     }
 }

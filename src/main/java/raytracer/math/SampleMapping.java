@@ -42,6 +42,32 @@ public final class SampleMapping {
         out.set(sinTheta * Math.cos(phi), sinTheta * Math.sin(phi), cosTheta);
     }
 
+    /**
+     * As {@link #toHemisphere}, around the unit {@code axis} instead of +z: theta is measured from
+     * the axis (a glossy lobe around its mirror direction; with e = 1, cosine sampling around a
+     * normal). The frame (a, b, axis) is built from whichever of y and x is further from the axis.
+     */
+    public static void toHemisphere(double sx, double sy, double e, double axisX, double axisY, double axisZ, Vec3 out) {
+        double hx = Math.abs(axisX) > 0.9 ? 0 : 1;
+        double hy = Math.abs(axisX) > 0.9 ? 1 : 0;
+        // a = h x axis, normalised; b = axis x a
+        double ax = hy * axisZ;
+        double ay = -hx * axisZ;
+        double az = hx * axisY - hy * axisX;
+        double len = Math.sqrt(ax * ax + ay * ay + az * az);
+        ax /= len;
+        ay /= len;
+        az /= len;
+        double bx = axisY * az - axisZ * ay;
+        double by = axisZ * ax - axisX * az;
+        double bz = axisX * ay - axisY * ax;
+        toHemisphere(sx, sy, e, out);
+        double lx = out.x;
+        double ly = out.y;
+        double lz = out.z;
+        out.set(lx * ax + ly * bx + lz * axisX, lx * ay + ly * by + lz * axisY, lx * az + ly * bz + lz * axisZ);
+    }
+
     /** The solid-angle density of {@link #toHemisphere}: (e + 1) / (2 pi) cos^e(theta). */
     public static double hemispherePdf(double cosTheta, double e) {
         return cosTheta <= 0 ? 0 : (e + 1) / (2 * Math.PI) * Math.pow(cosTheta, e);

@@ -28,6 +28,8 @@ import raytracer.math.Vec3;
  */
 public final class Renderer {
     public static final int TILE_SIZE = 32;
+    /** The most threads a {@link ForkJoinPool} runs (its parallelism limit, 2^15 - 1). */
+    public static final int MAX_THREADS = 0x7fff;
 
     private final World world;
     private final int threads;
@@ -36,8 +38,8 @@ public final class Renderer {
     private volatile long pixelsTotal = 1;
 
     public Renderer(World world, int threads, long seed) {
-        if (threads < 1) {
-            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        if (threads < 1 || threads > MAX_THREADS) {
+            throw new IllegalArgumentException("threads must be 1 to " + MAX_THREADS + ", got " + threads);
         }
         this.world = world;
         this.threads = threads;

@@ -3,12 +3,24 @@ package raytracer.shapes;
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.Compensated;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.Rounding;
 
 /** A sphere given by its centre and radius (Suffern, section 3.6). */
 public final class Sphere extends GeometricObject {
+    /**
+     * c = |f|^2 - r^2 is off by at most gamma(8) (|f|^2 + r^2); below 2^26 times that it is
+     * recomputed from the exact o - c to about twice double precision, so it keeps at least 26
+     * correct bits wherever double-double arithmetic can give them.
+     */
+    private static final double C_RECOMPUTE = 0x1.0p26 * Rounding.gamma(8);
+    /**
+     * The farthest a sphere may reach from the origin: the square of a distance to it then stays
+     * far below the largest double, 1.8e308 (radius 1e160 rendered black: r^2 was infinite).
+     */
+    static final double MAX_EXTENT = 1e150;
     private final double cx;
     private final double cy;
     private final double cz;
@@ -20,6 +32,11 @@ public final class Sphere extends GeometricObject {
         }
         if (!center.isFinite()) {
             throw new IllegalArgumentException("sphere centre must be finite, got " + center);
+        }
+        double extent = Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius;
+        if (extent > MAX_EXTENT) {
+            throw new IllegalArgumentException("sphere radius plus centre coordinate must be at most " + MAX_EXTENT
+                                               + " (squared distances to it must be doubles), got " + extent);
         }
         this.cx = center.x();
         this.cy = center.y();
@@ -53,11 +70,18 @@ public final class Sphere extends GeometricObject {
         double lx = fx - s * ray.dx;
         double ly = fy - s * ray.dy;
         double lz = fz - s * ray.dz;
-        double discriminant = radius * radius - (lx * lx + ly * ly + lz * lz);
+        double r2 = radius * radius;
+        double discriminant = r2 - (lx * lx + ly * ly + lz * lz);
         if (!(discriminant >= 0)) {
             return Double.POSITIVE_INFINITY;
         }
-        double c = fx * fx + fy * fy + fz * fz - radius * radius;
+        double ff = fx * fx + fy * fy + fz * fz;
+        double c = ff - r2;
+        // c, which fixes the near root, cancels when the origin is close to the surface against the
+        // radius: 1 unit above a sphere of radius 1e16 no digit was left and the near root was lost
+        if (Math.abs(c) < C_RECOMPUTE * (ff + r2)) {
+            c = exactC(ray);
+        }
         // stable pair of roots: q / a and c / q (Numerical Recipes, section 5.6)
         double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
         double t0 = q / a;
@@ -73,27 +97,88 @@ public final class Sphere extends GeometricObject {
         return Double.POSITIVE_INFINITY;
     }
 
+    /** c from the exact o - c (its own method, so that nearestRoot stays small enough to be inlined). */
+    private double exactC(Ray ray) {
+        return Compensated.residual(ray.ox, ray.oy, ray.oz, 0, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
+    }
+
+    /**
+     * The hit point is taken in one of two ways, whichever has the smaller error bound along the
+     * normal. Reprojected from the centre onto the surface, it is off by at most gamma(5) |p| plus
+     * the rounding of c + p (pbrt-v3, section 3.9.4): best for a sphere near the origin. On the ray,
+     * o + t d after one Newton step on the compensated residual g(t) = |o + t d - c|^2 - r^2, it is
+     * off by gamma(2) (|o| + |t d|) plus its distance from the surface, |g| / (|p| + r): best for
+     * a sphere that is large against its distance from the ray's origin, where |c| is huge and the
+     * first bound with it (radius 1e20: 1e5 units, and every shadow ray would start above the
+     * occluders it should meet).
+     */
     @Override
     public void completeHit(Ray ray, ShadeRec sr) {
         double t = sr.t;
         double px = ray.atX(t) - cx;
         double py = ray.atY(t) - cy;
         double pz = ray.atZ(t) - cz;
-        // reproject onto the surface: the error is then gamma(5) |p| (pbrt-v3, section 3.9.4)
-        double scale = radius / Math.sqrt(px * px + py * py + pz * pz);
-        px *= scale;
-        py *= scale;
-        pz *= scale;
-        sr.hitPoint.set(cx + px, cy + py, cz + pz);
-        double g = Rounding.gamma(6);
-        sr.hitError.set(g * (Math.abs(cx) + Math.abs(px)), g * (Math.abs(cy) + Math.abs(py)),
-                        g * (Math.abs(cz) + Math.abs(pz)));
-        sr.normal.set(px / radius, py / radius, pz / radius);
+        double length = Math.sqrt(px * px + py * py + pz * pz);
+        double nx = px / length;
+        double ny = py / length;
+        double nz = pz / length;
+        double g6 = Rounding.gamma(6);
+        double reprojected = g6 * (Math.abs(nx) * (Math.abs(cx) + Math.abs(px)) + Math.abs(ny) * (Math.abs(cy) + Math.abs(py))
+                                   + Math.abs(nz) * (Math.abs(cz) + Math.abs(pz)));
+        double g2 = Rounding.gamma(2);
+        double onRay = g2 * (Math.abs(nx) * (Math.abs(ray.ox) + Math.abs(t * ray.dx)) + Math.abs(ny) * (Math.abs(ray.oy)
+                             + Math.abs(t * ray.dy)) + Math.abs(nz) * (Math.abs(ray.oz) + Math.abs(t * ray.dz)));
+        if (!(onRay < reprojected && completeOnRay(ray, t, px * ray.dx + py * ray.dy + pz * ray.dz, length, reprojected, sr))) {
+            double scale = radius / length;
+            px *= scale;
+            py *= scale;
+            pz *= scale;
+            sr.hitPoint.set(cx + px, cy + py, cz + pz);
+            sr.hitError.set(g6 * (Math.abs(cx) + Math.abs(px)), g6 * (Math.abs(cy) + Math.abs(py)),
+                            g6 * (Math.abs(cz) + Math.abs(pz)));
+        }
+        sr.normal.set(nx, ny, nz);
         sr.geometricNormal.set(sr.normal);
         // spherical coordinates as in Suffern, section 29.3: u around the y axis, v from the south pole
         double phi = Math.atan2(sr.normal.x, sr.normal.z) + Math.PI;
         sr.u = phi / (2 * Math.PI);
         sr.v = 1 - Math.acos(Math.max(-1, Math.min(1, sr.normal.y))) / Math.PI;
+    }
+
+    /**
+     * Sets the hit point o + t d, with t (also {@code sr.t}) refined by a Newton step, if its error
+     * bound along the normal is below {@code reprojected}; pDotD is (o + t d - c).d, half the
+     * residual's slope in t.
+     */
+    private boolean completeOnRay(Ray ray, double t, double pDotD, double length, double reprojected, ShadeRec sr) {
+        double g = Compensated.residual(ray.ox, ray.oy, ray.oz, t, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
+        double refined = t - g / (2 * pDotD);
+        double gRefined = Compensated.residual(ray.ox, ray.oy, ray.oz, refined, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
+        // near a tangent the slope vanishes and the step may leap: keep it only if it helped
+        if (Math.abs(gRefined) < Math.abs(g)) {
+            t = refined;
+            g = gRefined;
+        }
+        // distance from the surface of the exact point o + t d: (|p|^2 - r^2) / (|p| + r)
+        double off = (Math.abs(g) + Compensated.errorBound(g, length, radius)) / (length + radius);
+        double x = ray.atX(t);
+        double y = ray.atY(t);
+        double z = ray.atZ(t);
+        double g2 = Rounding.gamma(2);
+        // the rounding of o + t d per axis, plus the distance off the surface along the normal
+        double ex = g2 * (Math.abs(ray.ox) + Math.abs(t * ray.dx));
+        double ey = g2 * (Math.abs(ray.oy) + Math.abs(t * ray.dy));
+        double ez = g2 * (Math.abs(ray.oz) + Math.abs(t * ray.dz));
+        double nx = Math.abs(x - cx) / length;
+        double ny = Math.abs(y - cy) / length;
+        double nz = Math.abs(z - cz) / length;
+        if (!(nx * ex + ny * ey + nz * ez + off < reprojected)) {
+            return false;
+        }
+        sr.t = t;
+        sr.hitPoint.set(x, y, z);
+        sr.hitError.set(ex + off * nx, ey + off * ny, ez + off * nz);
+        return true;
     }
 
     @Override

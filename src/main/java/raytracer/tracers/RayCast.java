@@ -1,5 +1,6 @@
 package raytracer.tracers;
 
+import raytracer.core.ShadeRec;
 import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
@@ -7,8 +8,8 @@ import raytracer.math.Ray;
 import raytracer.math.Rgb;
 
 /**
- * The ray-cast tracer (Suffern, section 14.5): only primary rays are shaded. A secondary ray asked
- * for by a mirror returns black, so the image shows direct light alone.
+ * The ray-cast tracer (Suffern, section 14.5): only primary rays are shaded, with {@code shade}.
+ * A secondary ray asked for by a mirror returns black, so the image shows direct light alone.
  */
 public final class RayCast implements Tracer {
     private final World world;
@@ -23,6 +24,9 @@ public final class RayCast implements Tracer {
             out.setBlack();
             return;
         }
-        Whitted.shadeClosest(world, ray, depth, scratch, out);
+        ShadeRec sr = ClosestHit.find(world, ray, depth, scratch, out);
+        if (sr != null) {
+            sr.material.shade(sr, out);
+        }
     }
 }

@@ -1,6 +1,5 @@
 package raytracer.tracers;
 
-import raytracer.core.Background;
 import raytracer.core.ShadeRec;
 import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
@@ -9,8 +8,10 @@ import raytracer.math.Ray;
 import raytracer.math.Rgb;
 
 /**
- * Whitted's tracer (Suffern, section 24.4): materials may trace secondary rays, and rays deeper than
- * the view plane's max depth return black.
+ * Whitted's tracer (Suffern, section 24.4): the closest hit's material shades it with
+ * {@code shade}, tracing secondary rays back through this tracer; rays deeper than the view
+ * plane's max depth return black. Lights are taken from one direction each, so a scene with area
+ * lights needs {@link AreaLighting}.
  */
 public final class Whitted implements Tracer {
     private final World world;
@@ -25,21 +26,9 @@ public final class Whitted implements Tracer {
             out.setBlack();
             return;
         }
-        shadeClosest(world, ray, depth, scratch, out);
-    }
-
-    /**
-     * The tracers' common step: the closest hit's material shades it, and a ray that escapes sees
-     * the background, or the reflection map of the object it left (a per-object environment).
-     */
-    static void shadeClosest(World world, Ray ray, int depth, WorkerScratch scratch, Rgb out) {
-        ShadeRec sr = scratch.shadeRec(depth);
-        sr.depth = depth;
-        if (world.hit(ray, sr)) {
+        ShadeRec sr = ClosestHit.find(world, ray, depth, scratch, out);
+        if (sr != null) {
             sr.material.shade(sr, out);
-        } else {
-            Background environment = scratch.environment(depth);
-            (environment != null ? environment : world.background()).radiance(ray, out);
         }
     }
 }

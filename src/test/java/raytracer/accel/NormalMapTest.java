@@ -74,6 +74,14 @@ class NormalMapTest {
         mapped.setNormalMap(0, constant(0.8, 0.5, 0.9), false);
         ShadeRec sr = shoot(mapped);
         assertEquals(0.6, sr.normal.x, 1e-9);
+        assertEquals(0, sr.normal.y, 1e-9);
         assertEquals(0.8, sr.normal.z, 1e-9);
+        // every component in its own channel: (2, -3, 6) / 7, with green the y axis and its sign kept
+        MeshBVH tilted = square();
+        tilted.setNormalMap(0, constant((2 / 7.0 + 1) / 2, (-3 / 7.0 + 1) / 2, (6 / 7.0 + 1) / 2), false);
+        ShadeRec t = shoot(tilted);
+        assertEquals(2 / 7.0, t.normal.x, 1e-9);
+        assertEquals(-3 / 7.0, t.normal.y, 1e-9);
+        assertEquals(6 / 7.0, t.normal.z, 1e-9);
     }
 }

@@ -47,9 +47,20 @@ class FittedBrdfTest {
             for (double phi : new double[] {0, 90, 180}) {
                 double v = lobe(p, direction(90 - eps, 0), direction(90 - eps, phi));
                 assertTrue(Double.isFinite(v) && v >= 0, p + " at " + eps + ": " + v);
-                // what reaches the image is f cos(theta_i), which stays bounded
-                assertTrue(Double.isFinite(v * Math.cos(Math.toRadians(90 - eps))));
             }
+            // in the mirror configuration (h = n) f cos(theta_i) has a closed form: Ward 1 / (4 pi a^2),
+            // bounded; Ward-Duer 1 / (4 pi a^2 cos(theta)), growing as its normalisation does;
+            // Blinn-Phong (e + 2) / (2 pi) cos(theta)
+            double angle = Math.toRadians(eps);
+            Vec3 wo = new Vec3().set(Math.cos(angle), 0, Math.sin(angle));
+            Vec3 wi = new Vec3().set(-Math.cos(angle), 0, Math.sin(angle));
+            double a2 = p.roughness() * p.roughness();
+            double expected = switch (p.model()) {
+                case WARD -> 1 / (4 * Math.PI * a2);
+                case WARD_DUER -> 1 / (4 * Math.PI * a2 * Math.sin(angle));
+                case BLINN_PHONG -> (p.roughness() + 2) / (2 * Math.PI) * Math.sin(angle);
+            };
+            assertEquals(expected, lobe(p, wo, wi) * Math.sin(angle), 1e-9 * expected, p + " at " + eps);
         }
         assertEquals(0, lobe(p, new Vec3().set(1, 0, 0), direction(45, 180)), "exactly grazing gives 0");
     }

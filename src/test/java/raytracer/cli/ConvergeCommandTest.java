@@ -28,7 +28,6 @@ class ConvergeCommandTest {
 
     private static final String SPHERES = """
         image: {width: 16, height: 12, samples: 4}
-        tracer: ray-cast
         ambient: {radiance: 0}
         camera: {eye: [0, 2, 5], look-at: [0, 0.5, 0], fov: 40}
         lights:

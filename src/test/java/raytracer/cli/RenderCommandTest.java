@@ -49,48 +49,85 @@ class RenderCommandTest {
           - {type: sphere, center: [0, 0.5, 0], radius: 0.5}
         """;
 
-    /** A failure is one readable line on stderr, without a stack trace. */
+    /** A failure is one readable line on stderr, in one format whatever the exit code, without a stack trace. */
     private static void assertOneLineError(Result r, String... fragments) {
         assertTrue(r.code() != 0, "exit code should be non-zero");
         assertEquals(1, r.lines().length, "expected one line, got:\n" + r.err());
+        assertTrue(r.err().startsWith("render: error: "), r.err());
         for (String f : fragments) {
             assertTrue(r.err().contains(f), "'" + f + "' missing from: " + r.err());
         }
         assertFalse(r.err().contains("\tat "), "stack trace printed without --verbose");
     }
 
-    @Test
-    void defaultSceneRendersToAPngWithContent() throws IOException {
-        Path out = dir.resolve("default.png");
-        Result r = run("-o", out.toString(), "-W", "96", "-H", "54", "--spp", "1");
-        assertEquals(0, r.code(), r.err());
-        BufferedImage image = ImageIO.read(out.toFile());
-        assertEquals(96, image.getWidth());
-        assertEquals(54, image.getHeight());
-        // a real scene has many distinct colours, not a blank frame
-        long distinct = java.util.stream.IntStream.range(0, 96 * 54)
-            .map(i -> image.getRGB(i % 96, i / 96)).distinct().count();
-        assertTrue(distinct > 200, "only " + distinct + " distinct colours");
-        assertTrue(r.err().contains("96x54") && r.err().contains("rays/s"), "summary line: " + r.err());
+    /** An 8-bit sRGB code for linear radiance, from IEC 61966-2-1, written out independently here. */
+    private static int srgbCode(double linear) {
+        double v = Math.max(0, Math.min(1, linear));
+        double encoded = v <= 0.0031308 ? 12.92 * v : 1.055 * Math.pow(v, 1 / 2.4) - 0.055;
+        return (int) Math.round(255 * encoded);
     }
 
     @Test
-    void pfmOutputHoldsLinearFiniteValues() throws IOException {
+    void defaultSceneRendersToAPngThatEncodesItsLinearImage() throws IOException {
+        Path png = dir.resolve("default.png");
+        Path pfm = dir.resolve("default.pfm");
+        Result r = run("-o", png.toString(), "-W", "96", "-H", "54", "--spp", "1");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("96x54") && r.err().contains("rays/s"), "summary line: " + r.err());
+        assertEquals(0, run("-o", pfm.toString(), "-W", "96", "-H", "54", "--spp", "1", "-q").code());
+        BufferedImage image = ImageIO.read(png.toFile());
+        Film film = ImageWriters.readPfm(pfm);
+        assertEquals(96, image.getWidth());
+        assertEquals(54, image.getHeight());
+        // every PNG code is the sRGB encoding of the same render's linear value
+        for (int y = 0; y < 54; y++) {
+            for (int x = 0; x < 96; x++) {
+                int rgb = image.getRGB(x, y);
+                int[] codes = {rgb >> 16 & 0xff, rgb >> 8 & 0xff, rgb & 0xff};
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(srgbCode(film.get(x, y, c)), codes[c], "pixel " + x + ", " + y + ", channel " + c);
+                }
+            }
+        }
+        // the top row looks above the horizon at the scene's background; the bottom row sees the lit floor
+        double[] sky = {0.52, 0.66, 0.85};
+        int skyRgb = srgbCode(sky[0]) << 16 | srgbCode(sky[1]) << 8 | srgbCode(sky[2]);
+        int floorPixels = 0;
+        for (int x = 0; x < 96; x++) {
+            assertEquals(skyRgb, image.getRGB(x, 0) & 0xffffff, "sky at " + x);
+            floorPixels += (image.getRGB(x, 53) & 0xffffff) != skyRgb && film.get(x, 53, 0) > 0.1 ? 1 : 0;
+        }
+        assertEquals(96, floorPixels, "floor along the bottom row");
+    }
+
+    @Test
+    void pfmOutputHoldsLinearRadiance() throws IOException {
+        // a matte wall facing the camera, lit by a point light at the eye: through the centre pixel
+        // L = ka La cd + kd cd / pi * I / r^2 = (0.2 * 0.1 + 0.8 * 25 pi / pi / 25) cd = 0.82 cd
         Path out = dir.resolve("linear.pfm");
-        Result r = run(scene("s.yaml", SMALL).toString(), "-o", out.toString(), "-q");
+        Path s = scene("wall.yaml", """
+            image: {width: 3, height: 3, samples: 1, sampler: regular}
+            camera: {eye: [0, 0, 5], look-at: [0, 0, 0], fov: 30}
+            ambient: {radiance: 0.1}
+            materials:
+              wall: {type: matte, ka: 0.2, kd: 0.8, color: [0.5, 0.25, 1]}
+            lights:
+              - {type: point, position: [0, 0, 5], intensity: 78.53981633974483}
+            objects:
+              - {type: plane, point: [0, 0, 0], normal: [0, 0, 1], material: wall}
+            """);
+        Result r = run(s.toString(), "-o", out.toString(), "-q");
         assertEquals(0, r.code(), r.err());
         assertEquals("", r.err(), "--quiet prints nothing");
         Film film = ImageWriters.readPfm(out);
-        assertEquals(16, film.width());
-        assertEquals(8, film.height());
-        float max = 0;
-        for (int y = 0; y < 8; y++) {
-            for (int x = 0; x < 16; x++) {
-                assertTrue(Float.isFinite(film.get(x, y, 0)));
-                max = Math.max(max, film.get(x, y, 0));
-            }
-        }
-        assertTrue(max > 0, "the lit sphere must appear");
+        assertEquals(3, film.width());
+        assertEquals(3, film.height());
+        assertEquals(0.82 * 0.5, film.get(1, 1, 0), 1e-6);
+        assertEquals(0.82 * 0.25, film.get(1, 1, 1), 1e-6);
+        assertEquals(0.82 * 1, film.get(1, 1, 2), 1e-6);
+        // off-centre the wall is farther and slanted: darker, but still linear in the colour
+        assertTrue(film.get(0, 0, 2) < film.get(1, 1, 2));
+        assertEquals(0.5, film.get(0, 0, 0) / film.get(0, 0, 2), 1e-6);
     }
 
     @Test
@@ -207,6 +244,18 @@ class RenderCommandTest {
     }
 
     @Test
+    void anEmptySceneRendersWithAWarning() throws IOException {
+        // it rendered a blank image without a word
+        Path s = scene("empty.yaml", "image: {width: 4, height: 4, samples: 1}\nbackground: [0.2, 0.3, 0.4]\nobjects: []\n");
+        Result r = run(s.toString(), "-o", dir.resolve("empty.png").toString());
+        assertEquals(0, r.code(), r.err());
+        assertEquals("render: warning: " + s + ":3:10: the scene has no objects; the image shows only the background",
+                     r.lines()[0]);
+        Result quiet = run(s.toString(), "-o", dir.resolve("empty.png").toString(), "-q");
+        assertEquals("", quiet.err(), "--quiet hides warnings");
+    }
+
+    @Test
     void missingSceneFile() {
         assertOneLineError(run(dir.resolve("nope.yaml").toString(), "-o", dir.resolve("a.png").toString()), "nope.yaml");
     }
@@ -252,7 +301,7 @@ class RenderCommandTest {
         String out = dir.resolve("a.png").toString();
         // every bad option value is a usage error: exit code 2 and a pointer to --help
         String[][] cases = {
-            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--max-depth", "-1"},
+            {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"}, {"--max-depth", "100000"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
             {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--frobnicate", "1"},
         };
@@ -262,6 +311,9 @@ class RenderCommandTest {
             assertEquals(2, r.code(), String.join(" ", c) + ": " + r.err());
             assertTrue(r.err().contains("(see render --help)"), r.err());
         }
+        // a fork/join pool runs at most 32767 threads; the message gives the range
+        assertOneLineError(run("-o", out, "--threads", "2147483647"), "--threads must be 1 to 32767, got 2147483647");
+        assertOneLineError(run("-o", out, "--max-depth", "1001"), "--max-depth must be 0 to 1000, got 1001");
         Result huge = run("-o", out, "--width", "50000", "--height", "50000");
         assertOneLineError(huge, "2500000000 pixels", "more than one image holds");
         assertEquals(2, huge.code());
@@ -273,20 +325,32 @@ class RenderCommandTest {
         Path file = Files.writeString(dir.resolve("plain.txt"), "x");
         assertOneLineError(run("-o", file.resolve("out.png").toString()), "does not exist");
         assertOneLineError(run("-o", dir.resolve("missing/out.png").toString()), "does not exist");
-        assertOneLineError(run("-o", dir.resolve("out.jpg").toString()), "unsupported", ".png");
-        assertOneLineError(run("-o", dir.toString()), "it is a directory", ".png");
+        // a bad -o is a bad option value like any other: exit code 2 and a pointer to --help
+        for (Result r : new Result[] {run("-o", dir.resolve("out.jpg").toString()), run("-o", dir.toString())}) {
+            assertOneLineError(r, r.err().contains("jpg") ? "unsupported extension" : "it is a directory", ".png", "(see render --help)");
+            assertEquals(2, r.code(), r.err());
+        }
     }
 
     @Test
-    void aFailedRenderLeavesTheExistingImageUntouched() throws IOException {
+    void aRenderThatFailsWhileWritingLeavesTheExistingImageUntouched() throws IOException, InterruptedException {
+        // a render in its own process whose file size limit (ulimit -f, in KiB) stops the PNG after
+        // 4 KiB: the write fails with "File too large" once the temporary file exists and is half
+        // written, every time
         Path out = dir.resolve("good.png");
         byte[] good = {1, 2, 3};
         Files.write(out, good);
-        Path s = scene("bad.yaml", SMALL + "  - {type: sphere, center: [0, 0, 0], radius: -1}\n");
-        assertTrue(run(s.toString(), "-o", out.toString()).code() != 0);
+        Path javaCommand = Path.of(System.getProperty("java.home"), "bin", "java");
+        Process child = new ProcessBuilder("bash", "-c", "ulimit -f 4 && exec \"$0\" \"$@\"", javaCommand.toString(),
+                                           "-cp", System.getProperty("java.class.path"), RenderCommand.class.getName(),
+                                           "-o", out.toString(), "-W", "200", "-H", "200", "--spp", "1", "-q")
+            .redirectErrorStream(true).start();
+        String err = new String(child.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+        assertEquals(1, child.waitFor(), err);
+        assertEquals("render: error: cannot write " + out + ": I/O error writing PNG file! (File too large)", err);
         assertArrayEquals(good, Files.readAllBytes(out));
         try (var files = Files.list(dir)) {
-            assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".partial")), "no temp file left");
+            assertEquals(java.util.List.of(out), files.toList(), "no temporary file left");
         }
     }
 
@@ -299,12 +363,16 @@ class RenderCommandTest {
 
     @Test
     void helpAndVersion() {
-        StringWriter out = new StringWriter();
+        // each in its own buffer: the version check passed on the help text before
+        StringWriter help = new StringWriter();
         picocli.CommandLine cli = new picocli.CommandLine(new RenderCommand());
-        cli.setOut(new PrintWriter(out, true));
+        cli.setOut(new PrintWriter(help, true));
         assertEquals(0, cli.execute("--help"));
-        assertTrue(out.toString().contains("--spp"), out.toString());
+        assertTrue(help.toString().startsWith("Usage: render ") && help.toString().contains("--max-depth"), help.toString());
+        StringWriter version = new StringWriter();
+        cli.setOut(new PrintWriter(version, true));
         assertEquals(0, cli.execute("--version"));
-        assertTrue(out.toString().contains("render "), out.toString());
+        assertTrue(version.toString().strip().matches("render (\\S+|\\(development build\\)) on Java " + java.util.regex.Pattern.quote(System.getProperty("java.version"))),
+                   version.toString());
     }
 }

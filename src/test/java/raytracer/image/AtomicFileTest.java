@@ -23,10 +23,11 @@ class AtomicFileTest {
     void aWriteThatFailsHalfwayKeepsTheOldFileAndLeavesNoTemporary() throws IOException {
         Path target = dir.resolve("image.png");
         Files.write(target, new byte[] {9, 9});
-        assertThrows(IOException.class, () -> AtomicFile.write(target, out -> {
+        IOException e = assertThrows(IOException.class, () -> AtomicFile.write(target, out -> {
             out.write(new byte[] {1, 2, 3});
             throw new IOException("disk full");
         }));
+        assertEquals("cannot write " + target + ": disk full", e.getMessage());
         assertArrayEquals(new byte[] {9, 9}, Files.readAllBytes(target));
         try (var files = Files.list(dir)) {
             assertEquals(1, files.count());
@@ -66,16 +67,37 @@ class AtomicFileTest {
 
     @Test
     void pfmRoundTripsLinearValues() throws IOException {
+        // 18 distinct values over 6 orders of magnitude, each exact in float, in every pixel and channel
         Film film = new Film(3, 2);
-        film.set(0, 0, 0.25, 12.5, 1e-6);
-        film.set(2, 1, 100, 0, 3);
+        float[] values = new float[18];
+        for (int i = 0; i < 18; i++) {
+            values[i] = (float) ((i + 1) * Math.pow(10, i % 6 - 3));
+        }
+        for (int y = 0; y < 2; y++) {
+            for (int x = 0; x < 3; x++) {
+                int i = 3 * (y * 3 + x);
+                film.set(x, y, values[i], values[i + 1], values[i + 2]);
+            }
+        }
         Path file = dir.resolve("x.pfm");
         ImageWriters.write(film, 1, file);
         Film back = ImageWriters.readPfm(file);
-        assertEquals(12.5f, back.get(0, 0, 1));
-        assertEquals(1e-6f, back.get(0, 0, 2));
-        assertEquals(100f, back.get(2, 1, 0));
-        assertTrue(Files.size(file) > 3 * 2 * 12);
+        assertEquals(3, back.width());
+        assertEquals(2, back.height());
+        for (int y = 0; y < 2; y++) {
+            for (int x = 0; x < 3; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(values[3 * (y * 3 + x) + c], back.get(x, y, c), 0, "pixel " + x + ", " + y + ", channel " + c);
+                }
+            }
+        }
+        // header "PF\n3 2\n-1.0\n" (12 bytes), then little-endian floats with the bottom row first
+        byte[] bytes = Files.readAllBytes(file);
+        assertEquals("PF\n3 2\n-1.0\n", new String(bytes, 0, 12, java.nio.charset.StandardCharsets.US_ASCII));
+        assertEquals(12 + 18 * 4, bytes.length);
+        java.nio.ByteBuffer data = java.nio.ByteBuffer.wrap(bytes, 12, 72).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        assertEquals(values[9], data.getFloat(), 0, "pixel (0, 1), red, comes first");
+        assertEquals(values[10], data.getFloat(), 0);
     }
 
     @Test

@@ -9,23 +9,25 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.cameras.Orthographic;
 import raytracer.core.Light;
+import raytracer.core.ShadeRec;
 import raytracer.core.ViewPlane;
+import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.materials.Matte;
 import raytracer.materials.Reflective;
 import raytracer.render.RenderStats;
 import raytracer.shapes.Rectangle;
-import raytracer.tracers.Whitted;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 import raytracer.math.Vector3D;
 import raytracer.render.Renderer;
 import raytracer.samplers.MultiJittered;
 import raytracer.shapes.Plane;
-import raytracer.tracers.RayCast;
+import raytracer.tracers.AreaLighting;
 
 /**
  * Area lights are unbiased: a white Lambertian floor (radiance = E / pi) under a light must average
@@ -43,7 +45,7 @@ class AreaLightTest {
         floor.setMaterial(new Matte(0, 1, RGBColor.WHITE));
         world.addObject(floor);
         world.addLight(light);
-        world.setTracer(RayCast::new);
+        world.setTracer(AreaLighting::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
         new Renderer(world, 2, 7).render(film);
@@ -66,51 +68,117 @@ class AreaLightTest {
         return new double[] {mean, Math.sqrt(Math.max(0, sum2 / n - mean * mean) / n)};
     }
 
+    // Three lights over the origin with their analytic irradiance E at the origin (normal +y),
+    // given as E / pi: the radiance of a white Lambertian floor there.
+
+    /** On the axis of a disk: E = pi Le R^2 / (h^2 + R^2). */
+    private static final double DISK_EXPECTED = 3.0 * 1 * 1 / (2 * 2 + 1 * 1);
+
+    private static AreaLight disk(int samples) {
+        return AreaLight.disk(new Point3D(0, 2, 0), new Vector3D(0, -1, 0), 1, 3, RGBColor.WHITE, samples);
+    }
+
+    /** A sphere wholly above the horizon, straight above: E = pi Le (R / d)^2. */
+    private static final double SPHERE_EXPECTED = 2 * 0.5 * 0.5 / (3.0 * 3);
+
+    private static AreaLight sphere(int samples) {
+        return AreaLight.sphere(new Point3D(0, 3, 0), 0.5, 2, RGBColor.WHITE, samples);
+    }
+
+    /**
+     * A 2a x 2b rectangle at height h, centred above: four corner rectangles a x b. The
+     * configuration factor of a differential area to a parallel rectangle above one corner is
+     * F = (X / sqrt(1 + X^2) atan(Y / sqrt(1 + X^2)) + Y / sqrt(1 + Y^2) atan(X / sqrt(1 + Y^2))) / (2 pi),
+     * X = a / h, Y = b / h, and E = pi Le 4 F.
+     */
+    private static final double RECTANGLE_EXPECTED = rectangleExpected(3, 1, 0.5, 2);
+
+    private static double rectangleExpected(double le, double a, double b, double h) {
+        double x = a / h;
+        double y = b / h;
+        double f = (x / Math.sqrt(1 + x * x) * Math.atan(y / Math.sqrt(1 + x * x))
+                    + y / Math.sqrt(1 + y * y) * Math.atan(x / Math.sqrt(1 + y * y))) / (2 * Math.PI);
+        return le * 4 * f;
+    }
+
+    private static AreaLight rectangle(int samples) {
+        return AreaLight.rectangle(new Point3D(-1, 2, -0.5), new Vector3D(2, 0, 0), new Vector3D(0, 0, 1), 3, RGBColor.WHITE, samples);
+    }
+
     @ParameterizedTest
     @ValueSource(ints = {1, 16})
     void diskLightMatchesTheAnalyticIrradiance(int samples) {
-        double le = 3;
-        double radius = 1;
-        double height = 2;
-        // on the axis of a disk: E = pi Le R^2 / (h^2 + R^2); radiance of a white Lambertian = E / pi
-        double expected = le * radius * radius / (height * height + radius * radius);
-        double[] e = estimate(AreaLight.disk(new Point3D(0, height, 0), new Vector3D(0, -1, 0), radius, le, RGBColor.WHITE, samples));
-        assertEquals(expected, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
-        assertTrue(e[1] < 0.02 * expected, "the estimate should be reasonably precise: " + e[1]);
+        double[] e = estimate(disk(samples));
+        assertEquals(DISK_EXPECTED, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
+        assertTrue(e[1] < 0.02 * DISK_EXPECTED, "the estimate should be reasonably precise: " + e[1]);
     }
 
     @ParameterizedTest
     @ValueSource(ints = {1, 16})
     void sphereLightMatchesTheAnalyticIrradiance(int samples) {
-        double le = 2;
-        double radius = 0.5;
-        double distance = 3;
-        // a sphere wholly above the horizon, straight above: E = pi Le (R / d)^2
-        double expected = le * radius * radius / (distance * distance);
-        double[] e = estimate(AreaLight.sphere(new Point3D(0, distance, 0), radius, le, RGBColor.WHITE, samples));
-        assertEquals(expected, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
+        double[] e = estimate(sphere(samples));
+        assertEquals(SPHERE_EXPECTED, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
     }
 
     @ParameterizedTest
     @ValueSource(ints = {1, 16})
     void rectangleLightMatchesTheAnalyticIrradiance(int samples) {
-        double le = 3;
-        double a = 1;
-        double b = 0.5;
-        double h = 2;
-        // four corner rectangles a x b over the point: the configuration factor of a differential
-        // area to a parallel rectangle above one corner is
-        // F = (X / sqrt(1 + X^2) atan(Y / sqrt(1 + X^2)) + Y / sqrt(1 + Y^2) atan(X / sqrt(1 + Y^2))) / (2 pi),
-        // X = a / h, Y = b / h; E = pi Le 4 F, and a white Lambertian floor shows E / pi
-        double x = a / h;
-        double y = b / h;
-        double f = (x / Math.sqrt(1 + x * x) * Math.atan(y / Math.sqrt(1 + x * x))
-                    + y / Math.sqrt(1 + y * y) * Math.atan(x / Math.sqrt(1 + y * y))) / (2 * Math.PI);
-        double expected = le * 4 * f;
-        double[] e = estimate(AreaLight.rectangle(new Point3D(-a, h, -b), new Vector3D(2 * a, 0, 0), new Vector3D(0, 0, 2 * b),
-                                                  le, RGBColor.WHITE, samples));
-        assertEquals(expected, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
-        assertTrue(e[1] < 0.02 * expected, "the estimate should be reasonably precise: " + e[1]);
+        double[] e = estimate(rectangle(samples));
+        assertEquals(RECTANGLE_EXPECTED, e[0], 4 * e[1] + 1e-6, samples + " samples: mean " + e[0] + " +- " + e[1]);
+        assertTrue(e[1] < 0.02 * RECTANGLE_EXPECTED, "the estimate should be reasonably precise: " + e[1]);
+    }
+
+    /**
+     * The book's estimator without a render: the mean over a fine stratified grid of samples of
+     * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
+     * 1 / area, the area computed here independently (2 x 1 rectangle, pi R^2, 4 pi R^2).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"disk", "sphere", "rectangle"})
+    void gOverPdfAveragesToTheAnalyticIrradiance(String kind) {
+        AreaLight light = kind.equals("disk") ? disk(1) : kind.equals("sphere") ? sphere(1) : rectangle(1);
+        double expected = kind.equals("disk") ? DISK_EXPECTED : kind.equals("sphere") ? SPHERE_EXPECTED : RECTANGLE_EXPECTED;
+        double emitterArea = kind.equals("disk") ? Math.PI : kind.equals("sphere") ? 4 * Math.PI * 0.5 * 0.5 : 2 * 1;
+        World world = new World(new ViewPlane(1, 1, 1, new MultiJittered(), 0, 1),
+            new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
+        ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+        sr.hitPoint.set(0, 0, 0);
+        sr.normal.set(0, 1, 0);
+        Rgb le = new Rgb();
+        Vec3 wi = new Vec3();
+        int grid = 400;
+        double sum = 0;
+        for (int i = 0; i < grid; i++) {
+            for (int j = 0; j < grid; j++) {
+                light.sample(sr, (i + 0.5) / grid, (j + 0.5) / grid, wi);
+                assertEquals(1 / emitterArea, light.pdf(sr), 1e-12 / emitterArea, "uniform by area");
+                light.L(sr, le);
+                double cos = Math.max(0, sr.normal.dot(wi));
+                sum += le.r * light.G(sr) * cos / light.pdf(sr);
+            }
+        }
+        assertEquals(expected, sum / (grid * grid) / Math.PI, 1e-4 * expected, kind);
+    }
+
+    /** G = cos(theta_light) / d^2 where both are known: the disk's centre and a point of its rim. */
+    @Test
+    void gIsTheCosineAtTheLightOverTheSquaredDistance() {
+        World world = new World(new ViewPlane(1, 1, 1, new MultiJittered(), 0, 1),
+            new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
+        ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+        sr.hitPoint.set(0, 0, 0);
+        Vec3 wi = new Vec3();
+        AreaLight light = disk(1);
+        // the concentric map sends (0.5, 0.5) to the centre, straight above at h = 2
+        assertEquals(2, light.sample(sr, 0.5, 0.5, wi), 1e-12);
+        assertEquals(1 / 4.0, light.G(sr), 1e-12);
+        // (1, 0.5) goes to the rim, at distance sqrt(5) and cos(theta_light) = 2 / sqrt(5)
+        assertEquals(Math.sqrt(5), light.sample(sr, 1, 0.5, wi), 1e-12);
+        assertEquals(2 / Math.sqrt(5) / 5, light.G(sr), 1e-12);
+        // from above the disk, which emits downwards, nothing
+        sr.hitPoint.set(0, 3, 0);
+        light.sample(sr, 0.5, 0.5, wi);
+        assertEquals(0, light.G(sr));
     }
 
     @ParameterizedTest
@@ -188,7 +256,7 @@ class AreaLightTest {
             floor.setMaterial(new Matte(0, 1, RGBColor.WHITE));
             world.addObject(floor);
             world.addLight(AreaLight.disk(new Point3D(0, -3 + height, 0), new Vector3D(0, -1, 0), radius, le, RGBColor.WHITE, 16));
-            world.setTracer(Whitted::new);
+            world.setTracer(AreaLighting::new);
             world.setCutoff(cutoffs[k]);
             world.prepare();
             Film film = new Film(SIZE, SIZE);

@@ -44,6 +44,31 @@ class SampleMappingTest {
         }
     }
 
+    /**
+     * Around any unit axis the mapping is the +z one turned: unit directions whose cosine with the
+     * axis is the z of the +z mapping for the same sample, so the density is unchanged.
+     */
+    @Test
+    void hemisphereAroundAnAxisIsTheZMappingTurned() {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(9);
+        Vec3 axis = new Vec3();
+        Vec3 turned = new Vec3();
+        Vec3 plain = new Vec3();
+        for (int i = 0; i < 20_000; i++) {
+            axis.set(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1)).normalize();
+            if (i % 3 == 0) {
+                axis.set(i % 2 == 0 ? 1 : -1, 0, 0); // the frame's other helper axis
+            }
+            double u = random.nextDouble();
+            double v = random.nextDouble();
+            double e = i % 2 == 0 ? 1 : 50;
+            SampleMapping.toHemisphere(u, v, e, axis.x, axis.y, axis.z, turned);
+            SampleMapping.toHemisphere(u, v, e, plain);
+            assertEquals(1, turned.length(), 1e-12);
+            assertEquals(plain.z, turned.dot(axis), 1e-12);
+        }
+    }
+
     @Test
     void hemispherePdfIntegratesToOne() {
         for (double e : new double[] {0, 1, 20, 500}) {

@@ -62,5 +62,10 @@ public final class NonFiniteScene {
                 out.g = Double.POSITIVE_INFINITY;
             }
         }
+
+        @Override
+        public void areaLightShade(ShadeRec sr, Rgb out) {
+            shade(sr, out); // the scene has no area light; the tracer may call either
+        }
     }
 }

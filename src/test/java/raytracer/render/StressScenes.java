@@ -33,6 +33,7 @@ import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.mesh.Mesh;
 import raytracer.textures.Checker;
+import raytracer.tracers.AreaLighting;
 import raytracer.tracers.Whitted;
 
 /**
@@ -90,6 +91,7 @@ final class StressScenes {
         add(world, turnedBox(s, d), matte);
         world.addLight(AreaLight.rectangle(p(s, d, -1, 2.5, -0.5), new Vector3D(1.5 * s, 0, 0), new Vector3D(0, 0, 1.2 * s),
                                            6, RGBColor.WHITE, 4));
+        world.setTracer(AreaLighting::new); // area lights are sampled (Suffern, chapter 18)
         return prepared(world);
     }
 

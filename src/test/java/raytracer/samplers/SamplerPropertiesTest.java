@@ -79,23 +79,103 @@ class SamplerPropertiesTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley"})
-    void pointsStayInTheUnitSquareAndAverageOneHalf(String name) {
+    void pointsStayInTheUnitSquare(String name) {
         Sampler s = Samplers.byName(name);
-        int n = s.supportedCount(64);
-        double sumX = 0;
-        double sumY = 0;
-        int total = 0;
-        for (long seed = 0; seed < 200; seed++) {
-            double[][] p = draw(s, n, seed);
-            for (int i = 0; i < n; i++) {
-                assertTrue(p[0][i] >= 0 && p[0][i] < 1 && p[1][i] >= 0 && p[1][i] < 1, name);
-                sumX += p[0][i];
-                sumY += p[1][i];
-                total++;
+        for (int n : new int[] {1, 2, 9, 64, 100}) {
+            for (long seed = 0; seed < 50; seed++) {
+                double[][] p = draw(s, s.supportedCount(n), seed);
+                for (int i = 0; i < p[0].length; i++) {
+                    assertTrue(p[0][i] >= 0 && p[0][i] < 1 && p[1][i] >= 0 && p[1][i] < 1, name + " " + p[0][i] + ", " + p[1][i]);
+                }
             }
         }
-        assertEquals(0.5, sumX / total, 0.01, name);
-        assertEquals(0.5, sumY / total, 0.01, name);
+    }
+
+    @Test
+    void regularAndHammersleyPointsAreExact() {
+        double[][] regular = draw(new Regular(), 9, 0);
+        for (int row = 0; row < 3; row++) {
+            for (int col = 0; col < 3; col++) {
+                assertEquals((col + 0.5) / 3, regular[0][row * 3 + col], 0);
+                assertEquals((row + 0.5) / 3, regular[1][row * 3 + col], 0);
+            }
+        }
+        double[][] hammersley = draw(new Hammersley(), 8, 0);
+        assertArrayEquals(new double[] {0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}, hammersley[0], 0);
+        // base-2 radical inverse of 1..7: mirror the binary digits about the point
+        assertArrayEquals(new double[] {0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875}, hammersley[1], 0);
+        assertEquals(0b1011 / 16.0, draw(new Hammersley(), 14, 0)[1][13], 0, "13 = 1101b -> 0.1011b");
+    }
+
+    /**
+     * Pearson's chi-square of counts against equal expectations; for d degrees of freedom it
+     * exceeds d + 4.5 sqrt(2 d) + 8 with probability below about 1e-4 (Wilson-Hilferty), so with
+     * the fixed seeds here only a sampler that is not uniform fails.
+     */
+    private static void assertUniform(int[] counts, String what) {
+        double total = Arrays.stream(counts).sum();
+        double expected = total / counts.length;
+        double chi2 = Arrays.stream(counts).mapToDouble(c -> (c - expected) * (c - expected) / expected).sum();
+        int dof = counts.length - 1;
+        assertTrue(chi2 < dof + 4.5 * Math.sqrt(2 * dof) + 8, what + ": chi-square " + chi2 + " for " + Arrays.toString(counts));
+    }
+
+    /** Where inside its stratum of width 1/strata each coordinate lies, in 10 bins, over many seeds. */
+    private static int[] offsetsInStrata(Sampler s, int n, int strata, int axis) {
+        int[] bins = new int[10];
+        for (long seed = 0; seed < 400; seed++) {
+            for (double v : draw(s, n, seed)[axis]) {
+                double offset = v * strata - Math.floor(v * strata);
+                bins[(int) (offset * 10)]++;
+            }
+        }
+        return bins;
+    }
+
+    @Test
+    void pointsAreUniformWithinTheirStrata() {
+        // a pattern that is stratified but always at the stratum's centre (or corner) fails here
+        for (int axis = 0; axis < 2; axis++) {
+            String xy = axis == 0 ? " x" : " y";
+            assertUniform(offsetsInStrata(new Jittered(), 16, 4, axis), "jittered in its 4 x 4 cells" + xy);
+            assertUniform(offsetsInStrata(new MultiJittered(), 16, 16, axis), "multi-jittered in its 16 sub-columns" + xy);
+            assertUniform(offsetsInStrata(new NRooks(), 16, 16, axis), "n-rooks in its 16 columns" + xy);
+            assertUniform(offsetsInStrata(new PureRandom(), 16, 1, axis), "random" + xy);
+        }
+        // and random's x and y are independent: equal counts in the cells of a 4 x 4 grid
+        int[] cells = new int[16];
+        for (long seed = 0; seed < 400; seed++) {
+            double[][] p = draw(new PureRandom(), 16, seed);
+            int[] h = histogram(p[0], p[1], 4, 4);
+            for (int c = 0; c < 16; c++) {
+                cells[c] += h[c];
+            }
+        }
+        assertUniform(cells, "random over a 4 x 4 grid");
+    }
+
+    @Test
+    void shufflesReachEveryArrangement() {
+        // n-rooks: the column of the point in row 0 is any of the n; multi-jittered: the point of cell
+        // (0, 0) lies in any of its k sub-columns. A biased shuffle (Sattolo's, or none) fails.
+        int[] column = new int[4];
+        int[] subColumn = new int[4];
+        for (long seed = 0; seed < 4000; seed++) {
+            double[][] rooks = draw(new NRooks(), 4, seed);
+            for (int i = 0; i < 4; i++) {
+                if ((int) (rooks[1][i] * 4) == 0) {
+                    column[(int) (rooks[0][i] * 4)]++;
+                }
+            }
+            double[][] mj = draw(new MultiJittered(), 16, seed);
+            for (int i = 0; i < 16; i++) {
+                if ((int) (mj[0][i] * 4) == 0 && (int) (mj[1][i] * 4) == 0) {
+                    subColumn[(int) (mj[0][i] * 16)]++;
+                }
+            }
+        }
+        assertUniform(column, "n-rooks: column of row 0");
+        assertUniform(subColumn, "multi-jittered: sub-column in cell (0, 0)");
     }
 
     @ParameterizedTest

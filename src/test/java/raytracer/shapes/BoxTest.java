@@ -76,10 +76,21 @@ class BoxTest {
     }
 
     @Test
-    void rayGrazingAFacePlaneGivesNoNaN() {
-        ShadeRec sr = h.hit(box, ray(-5, 1, 0, 1, 0, 0));
-        assertTrue(sr == null || Double.isFinite(sr.t));
-        assertFalse(h.shadowHit(box, ray(0, 0, 5, 0, 0, 1), Double.POSITIVE_INFINITY));
+    void aRayInTheFacePlaneMissesAndOneJustInsideHits() {
+        // a ray along the plane y = 1 of the top face touches only the boundary: in the slab test
+        // (1 - 1) * infinity is NaN, which the comparisons must turn into a miss, not a NaN distance
+        for (double y : new double[] {1, -1}) {
+            assertNull(h.hit(box, ray(-5, y, 0, 1, 0, 0)), "in the plane y = " + y);
+            assertFalse(h.shadowHit(box, ray(-5, y, 0, 1, 0, 0), Double.POSITIVE_INFINITY), "in the plane y = " + y);
+            assertNull(h.hit(box, ray(-5, y + Math.copySign(1e-12, y), 0, 1, 0, 0)), "just outside y = " + y);
+            ShadeRec sr = h.hit(box, ray(-5, y - Math.copySign(1e-12, y), 0, 1, 0, 0));
+            assertNotNull(sr, "just inside y = " + y);
+            assertEquals(4, sr.t, 0);
+            assertEquals(-1, sr.normal.x, 0);
+        }
+        // the shadow test of the ray just inside sees the box only within its reach
+        assertTrue(h.shadowHit(box, ray(-5, 1 - 1e-12, 0, 1, 0, 0), 4.5));
+        assertFalse(h.shadowHit(box, ray(-5, 1 - 1e-12, 0, 1, 0, 0), 3.5));
     }
 
     @Test

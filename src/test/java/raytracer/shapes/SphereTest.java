@@ -8,10 +8,14 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static raytracer.shapes.HitTesting.ray;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
+import raytracer.math.Ray;
+import raytracer.math.Vec3;
 
 class SphereTest {
     private final HitTesting h = new HitTesting();
@@ -94,11 +98,79 @@ class SphereTest {
         }
     }
 
+    /** The near root of |o + t d - c|^2 = r^2 in exact arithmetic (40 digits), by the textbook formula. */
+    private static double exactNearRoot(Ray ray, Point3D c, double r) {
+        MathContext mc = new MathContext(40);
+        BigDecimal[] f = {exact(ray.ox).subtract(exact(c.x())), exact(ray.oy).subtract(exact(c.y())), exact(ray.oz).subtract(exact(c.z()))};
+        BigDecimal[] d = {exact(ray.dx), exact(ray.dy), exact(ray.dz)};
+        BigDecimal a = BigDecimal.ZERO;
+        BigDecimal halfB = BigDecimal.ZERO;
+        BigDecimal cc = exact(r).multiply(exact(r)).negate();
+        for (int i = 0; i < 3; i++) {
+            a = a.add(d[i].multiply(d[i]));
+            halfB = halfB.add(f[i].multiply(d[i]));
+            cc = cc.add(f[i].multiply(f[i]));
+        }
+        BigDecimal root = halfB.multiply(halfB).subtract(a.multiply(cc)).sqrt(mc);
+        return halfB.negate().subtract(root).divide(a, mc).doubleValue();
+    }
+
+    private static BigDecimal exact(double v) {
+        return new BigDecimal(v);
+    }
+
+    /** How far p lies from the sphere's surface, exactly: (|p - c|^2 - r^2) / (|p - c| + r). */
+    private static double exactDistanceToSurface(Vec3 p, Point3D c, double r) {
+        MathContext mc = new MathContext(40);
+        BigDecimal[] e = {exact(p.x).subtract(exact(c.x())), exact(p.y).subtract(exact(c.y())), exact(p.z).subtract(exact(c.z()))};
+        BigDecimal square = e[0].multiply(e[0]).add(e[1].multiply(e[1])).add(e[2].multiply(e[2]));
+        return square.subtract(exact(r).multiply(exact(r))).divide(square.sqrt(mc).add(exact(r)), mc).doubleValue();
+    }
+
+    @Test
+    void aHugeSphereSeenFromCloseByIsHitOnItsNearSideAndItsHitPointsAreExact() {
+        // the ray's origin relative to the centre, h + r, is not a double once r is past 2^53 h:
+        // the near root was lost (radius 1e16 and more), or far off (1e14: 3e-3 out of 6)
+        SplittableRandom random = new SplittableRandom(3);
+        for (double r : new double[] {1e6, 1e10, 1e14, 1e16, 1e20, 1e25}) {
+            Point3D c = new Point3D(0, -r, 0);
+            Sphere s = new Sphere(c, r);
+            for (int i = 0; i < 100; i++) {
+                double height = Math.pow(10, -3 + 6 * random.nextDouble());
+                double dx = random.nextDouble() - 0.5;
+                double dz = random.nextDouble() - 0.5;
+                double dy = -0.1 - random.nextDouble();
+                Ray ray = ray(random.nextDouble() - 0.5, height, random.nextDouble() - 0.5, dx, dy, dz);
+                String what = "radius " + r + ", " + ray;
+                double expected = exactNearRoot(ray, c, r);
+                ShadeRec sr = h.hit(s, ray);
+                assertNotNull(sr, what);
+                assertEquals(expected, sr.t, 1e-9 * expected, what);
+                assertTrue(sr.frontFace, what);
+                Vec3 n = sr.geometricNormal;
+                double offset = Math.abs(n.x) * sr.hitError.x + Math.abs(n.y) * sr.hitError.y + Math.abs(n.z) * sr.hitError.z;
+                double off = Math.abs(exactDistanceToSurface(sr.hitPoint, c, r));
+                assertTrue(off <= offset, what + ": hit point " + off + " off the surface, bound " + offset);
+                // small enough for the shadow of a ball 1 unit tall to start where it should
+                assertTrue(offset < 1e-4 * Math.max(1, sr.t), what + ": bound " + offset);
+                // a ray leaving towards the sky does not find the sphere again; one going in leaves it far away
+                Ray out = sr.spawnRay(0.3, 1, 0.2, new Ray());
+                assertFalse(s.shadowHit(out, Double.POSITIVE_INFINITY, sr), what + ": self-shadowed");
+                Ray in = sr.spawnRay(0.3, -1, 0.2, new Ray());
+                assertTrue(exactNearRoot(in, c, r) < 0, what + ": the inward ray starts inside");
+            }
+        }
+    }
+
     @Test
     void badRadiusIsRejected() {
         assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, -1));
         assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, 0));
         assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, Double.NaN));
+        // radius 1e160 rendered black without a word: its square is infinite
+        assertThrows(IllegalArgumentException.class, () -> new Sphere(Point3D.ORIGIN, 1e151));
+        assertThrows(IllegalArgumentException.class, () -> new Sphere(new Point3D(0, -1e150, 0), 1e149));
+        assertNotNull(h.hit(new Sphere(new Point3D(0, -5e149, 0), 5e149), ray(0, 1, 6, 0, -1, -6)));
     }
 
     @Test

@@ -35,7 +35,7 @@ public final class ClosedFormReader {
 
     private static LitPlane read(Source source, String text) throws SceneException {
         ViewPlane vp = SceneLoader.load(source, text, OptionalInt.empty()).viewPlane();
-        Node root = SceneLoader.compose(source, text);
+        Node root = SceneLoader.root(source, text);
         YamlObject scene = new YamlObject(source, root, "the scene", SceneLoader.SECTIONS);
         String pass = scene.string("pass", "full");
         if (!pass.equals("full") && !pass.equals("direct")) {

@@ -17,7 +17,7 @@ import raytracer.shapes.Disk;
 import raytracer.shapes.Rectangle;
 import raytracer.shapes.Sphere;
 
-/** One entry of the {@code lights} list: point or directional. */
+/** One entry of the {@code lights} list: point, directional or an area light. */
 final class LightReader {
     private LightReader() {
     }
@@ -37,15 +37,19 @@ final class LightReader {
             case "point" -> {
                 YamlObject l = new YamlObject(source, node, "point light", Set.of("type", "position", "intensity", "color", "shadows"));
                 common = l;
-                yield new PointLight(l.number("intensity", 1, 0, false), l.color("color", RGBColor.WHITE),
-                                     l.requiredPoint("position"));
+                double intensity = l.number("intensity", 1, 0, false);
+                RGBColor color = l.color("color", RGBColor.WHITE);
+                l.checkEmission("intensity", intensity, "color", color);
+                yield new PointLight(intensity, color, l.requiredPoint("position"));
             }
             case "directional" -> {
                 YamlObject l = new YamlObject(source, node, "directional light", Set.of("type", "direction", "radiance", "color", "shadows"));
                 common = l;
+                double radiance = l.number("radiance", 1, 0, false);
+                RGBColor color = l.color("color", RGBColor.WHITE);
+                l.checkEmission("radiance", radiance, "color", color);
                 try {
-                    yield new Directional(l.number("radiance", 1, 0, false), l.color("color", RGBColor.WHITE),
-                                          l.requiredVector("direction"));
+                    yield new Directional(radiance, color, l.requiredVector("direction"));
                 } catch (IllegalArgumentException e) {
                     throw source.error(l.raw("direction"), e.getMessage());
                 }
@@ -78,6 +82,7 @@ final class LightReader {
     private static Light area(YamlObject l, String kind, World world, OptionalInt areaLightSamples) throws SceneException {
         double ls = l.number("radiance", AREA_RADIANCE, 0, false);
         RGBColor color = l.color("color", RGBColor.WHITE);
+        l.checkEmission("radiance", ls, "color", color);
         int samples = l.integer("samples", AREA_SAMPLES, 1);
         if (areaLightSamples.isPresent()) {
             samples = areaLightSamples.getAsInt();

@@ -1,7 +1,6 @@
 package raytracer.io.scene;
 
 import java.io.IOException;
-import java.io.StringReader;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
@@ -9,23 +8,29 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.OptionalInt;
 import java.util.Set;
+import java.util.function.Function;
 import org.yaml.snakeyaml.LoaderOptions;
-import org.yaml.snakeyaml.Yaml;
+import org.yaml.snakeyaml.composer.Composer;
 import org.yaml.snakeyaml.error.MarkedYAMLException;
 import org.yaml.snakeyaml.error.YAMLException;
 import org.yaml.snakeyaml.nodes.Node;
+import org.yaml.snakeyaml.parser.ParserImpl;
+import org.yaml.snakeyaml.resolver.Resolver;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.ShadingPass;
+import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
 import raytracer.samplers.Samplers;
+import raytracer.tracers.AreaLighting;
 import raytracer.tracers.RayCast;
 import raytracer.tracers.Whitted;
 
@@ -38,6 +43,14 @@ public final class SceneLoader {
         Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     static final double AMBIENT_RADIANCE = 0.1;
     static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding");
+
+    /**
+     * The most characters (Unicode code points) a scene file may hold. SnakeYAML's default, 3 MiB,
+     * refused a generated scene of 66,576 spheres (4.9 MB). 64 MiB holds 900,000 spheres written one
+     * a line, which took 33 s and 3.4 GiB of heap to load (2 shared cores): past that, a mesh file is
+     * the better form.
+     */
+    static final int MAX_CHARACTERS = 64 << 20;
 
     private SceneLoader() {
     }
@@ -80,31 +93,8 @@ public final class SceneLoader {
     }
 
     static World load(Source source, String text, OptionalInt areaLightSamples) throws SceneException {
-        Node root = compose(source, text);
-        return build(source, root, new YamlObject(source, root, "the scene", SECTIONS), areaLightSamples);
-    }
-
-    /** The YAML tree of the text, or a SceneException pointing at the syntax error. */
-    static Node compose(Source source, String text) throws SceneException {
-        Node root;
-        try {
-            LoaderOptions options = new LoaderOptions();
-            options.setAllowDuplicateKeys(false);
-            root = new Yaml(options).compose(new StringReader(text));
-        } catch (MarkedYAMLException e) {
-            String problem = e.getProblem() != null ? e.getProblem() : e.getMessage();
-            throw (e.getProblemMark() != null ? source.error(e.getProblemMark(), "syntax error: " + problem)
-                                              : new SceneException(source.name() + ": syntax error: " + problem));
-        } catch (YAMLException e) {
-            throw new SceneException(source.name() + ": syntax error: " + e.getMessage().replace('\n', ' '));
-        }
-        if (root == null) {
-            throw new SceneException(source.name() + ": the scene file is empty");
-        }
-        return root;
-    }
-
-    private static World build(Source source, Node root, YamlObject scene, OptionalInt areaLightSamples) throws SceneException {
+        Node root = root(source, text);
+        YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
         ViewPlane vp = readImage(source, scene);
         Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
         World world = new World(vp, camera, readAmbient(source, scene));
@@ -115,12 +105,6 @@ public final class SceneLoader {
         if (scene.has("environment")) {
             world.setBackground(textures.environment(scene.raw("environment"), "environment"));
         }
-        String tracer = scene.string("tracer", "whitted");
-        switch (tracer) {
-            case "whitted" -> world.setTracer(Whitted::new);
-            case "ray-cast" -> world.setTracer(RayCast::new);
-            default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + tracer + "'; allowed: ray-cast, whitted");
-        }
         if (scene.has("pass")) {
             try {
                 world.setPass(ShadingPass.parse(scene.requiredString("pass")));
@@ -129,16 +113,62 @@ public final class SceneLoader {
             }
         }
         Map<String, Material> materials = readMaterials(source, scene, textures);
-        for (Node light : scene.list("lights")) {
-            world.addLight(LightReader.read(source, light, world, areaLightSamples));
+        boolean areaLights = false;
+        for (Node node : scene.list("lights")) {
+            Light light = LightReader.read(source, node, world, areaLightSamples);
+            areaLights |= light.hasExtent();
+            world.addLight(light);
         }
+        world.setTracer(readTracer(source, scene, areaLights));
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");
         }
-        for (Node object : scene.list("objects")) {
+        List<Node> objects = scene.list("objects");
+        if (objects.isEmpty()) {
+            world.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
+        }
+        for (Node object : objects) {
             world.addObject(ObjectReader.read(source, object, materials, world, textures));
         }
         return world;
+    }
+
+    /** The YAML node tree of a scene's text; an empty text is an error. */
+    static Node root(Source source, String text) throws SceneException {
+        Node root = compose(source, text);
+        if (root == null) {
+            throw new SceneException(source.name() + ": the scene file is empty");
+        }
+        return root;
+    }
+
+    /** The YAML node tree of the text; size, characters and syntax checked, in that order. */
+    private static Node compose(Source source, String text) throws SceneException {
+        int length = text.codePointCount(0, text.length());
+        if (length > MAX_CHARACTERS) {
+            throw new SceneException(source.name() + ": the scene file has " + length + " characters, more than the "
+                                     + MAX_CHARACTERS + " a scene may hold (put large meshes in OBJ files)");
+        }
+        int bad = SceneText.firstUnprintable(text);
+        if (bad >= 0) {
+            SceneText at = new SceneText(source.name(), text);
+            at.forward(text.codePointCount(0, bad));
+            throw source.error(at.getMark(),
+                               String.format("character U+%04X is not allowed in a YAML file", text.codePointAt(bad)));
+        }
+        LoaderOptions options = new LoaderOptions();
+        options.setAllowDuplicateKeys(false);
+        options.setCodePointLimit(MAX_CHARACTERS);
+        try {
+            return new Composer(new ParserImpl(new SceneText(source.name(), text), options), new Resolver(), options)
+                .getSingleNode();
+        } catch (MarkedYAMLException e) {
+            String problem = e.getProblem() != null ? e.getProblem() : e.getMessage();
+            throw (e.getProblemMark() != null ? source.error(e.getProblemMark(), "syntax error: " + problem)
+                                              : new SceneException(source.name() + ": syntax error: " + problem));
+        } catch (YAMLException e) {
+            throw new SceneException(source.name() + ": syntax error: " + e.getMessage().replace('\n', ' '));
+        }
     }
 
     private static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
@@ -155,7 +185,29 @@ public final class SceneLoader {
         }
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
                              image.integer("samples", 4, 1), Samplers.byName(samplerName),
-                             image.integer("max-depth", 5, 0), image.number("exposure", 1, 0, true));
+                             image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true));
+    }
+
+    /**
+     * Suffern's tracers: area-lighting, the default when a light has extent, whitted otherwise, or
+     * ray-cast. Whitted and ray-cast take each light from one direction, so they are refused for a
+     * scene with area lights rather than render it without them.
+     */
+    private static Function<World, Tracer> readTracer(Source source, YamlObject scene, boolean areaLights)
+            throws SceneException {
+        String name = scene.string("tracer", areaLights ? "area-lighting" : "whitted");
+        Function<World, Tracer> tracer = switch (name) {
+            case "area-lighting" -> AreaLighting::new;
+            case "whitted" -> Whitted::new;
+            case "ray-cast" -> RayCast::new;
+            default -> throw source.error(scene.raw("tracer"), "unknown tracer '" + name
+                                          + "'; allowed: area-lighting, ray-cast, whitted");
+        };
+        if (areaLights && !name.equals("area-lighting")) {
+            throw source.error(scene.raw("tracer"), "tracer '" + name + "' cannot sample the scene's area lights; "
+                               + "use area-lighting (the default with area lights; max-depth: 0 for direct light only)");
+        }
+        return tracer;
     }
 
     private static double readCutoff(Source source, YamlObject scene) throws SceneException {
@@ -188,7 +240,10 @@ public final class SceneLoader {
             return new Ambient(AMBIENT_RADIANCE, RGBColor.WHITE);
         }
         YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", Set.of("radiance", "color"));
-        return new Ambient(a.number("radiance", AMBIENT_RADIANCE, 0, false), a.color("color", RGBColor.WHITE));
+        double radiance = a.number("radiance", AMBIENT_RADIANCE, 0, false);
+        RGBColor color = a.color("color", RGBColor.WHITE);
+        a.checkEmission("radiance", radiance, "color", color);
+        return new Ambient(radiance, color);
     }
 
     private static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)

@@ -13,7 +13,16 @@ record Source(String name, Path folder) {
     }
 
     SceneException error(Mark mark, String message) {
-        return new SceneException(name + ":" + (mark.getLine() + 1) + ":" + (mark.getColumn() + 1) + ": " + message);
+        return new SceneException(at(mark) + ": " + message);
+    }
+
+    /** "file:line:column" of a node, for warnings. */
+    String at(Node node) {
+        return at(node.getStartMark());
+    }
+
+    private String at(Mark mark) {
+        return name + ":" + (mark.getLine() + 1) + ":" + (mark.getColumn() + 1);
     }
 
     Path resolve(String path) {

@@ -50,7 +50,21 @@ final class TextureReader {
 
     EnvironmentMap environment(Node node, String what) throws SceneException {
         YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity", "rotate-y"));
-        return new EnvironmentMap(image(e), e.number("intensity", 1, 0, false), e.number("rotate-y", 0));
+        Film map = image(e);
+        double intensity = e.number("intensity", 1, 0, false);
+        e.checkEmission("intensity", intensity, "file", "the brightest pixel of " + source.resolve(e.requiredString("file")),
+                        brightest(map));
+        return new EnvironmentMap(map, intensity, e.number("rotate-y", 0));
+    }
+
+    private static double brightest(Film film) {
+        double max = 0;
+        for (int y = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++) {
+                max = Math.max(max, Math.max(film.get(x, y, 0), Math.max(film.get(x, y, 1), film.get(x, y, 2))));
+            }
+        }
+        return max;
     }
 
     /** Reads (or reuses) an image for a file path given relative to the scene, naming the path on failure. */

@@ -151,15 +151,23 @@ final class YamlObject {
     }
 
     int integer(String key, int fallback, int min) throws SceneException {
+        return integer(key, fallback, min, Integer.MAX_VALUE);
+    }
+
+    /** A whole number from {@code min} to {@code max}. */
+    int integer(String key, int fallback, int min, int max) throws SceneException {
         if (!has(key)) {
             return fallback;
         }
         double v = requiredNumber(key);
-        if (v != Math.rint(v) || Math.abs(v) > Integer.MAX_VALUE) {
+        if (v != Math.rint(v)) {
             throw source.error(raw(key), "'" + key + "' in " + what + " must be a whole number, got " + format(v));
         }
         if (v < min) {
-            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + (long) v);
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + format(v));
+        }
+        if (v > max) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at most " + max + ", got " + format(v));
         }
         return (int) v;
     }
@@ -218,6 +226,30 @@ final class YamlObject {
         }
         return new RGBColor(t[0], t[1], t[2]);
     }
+
+    /**
+     * Checks what a light emits: {@code scale} (the value of {@code scaleKey}) times {@code factor},
+     * the brightest channel of its colour ({@code factorName}, read from {@code factorKey}). Above the
+     * largest float the image could only hold infinity. The message points at the scale if given,
+     * else at the factor's key, else at this mapping.
+     */
+    void checkEmission(String scaleKey, double scale, String factorKey, String factorName, double factor)
+            throws SceneException {
+        if (!(scale * factor <= MAX_EMISSION)) {
+            Node where = has(scaleKey) ? raw(scaleKey) : has(factorKey) ? raw(factorKey) : node;
+            throw source.error(where, String.format(java.util.Locale.ROOT, "'%s' x %s in %s must be at most %.6g "
+                                                    + "(the largest value an image holds), got %.6g x %.6g",
+                                                    scaleKey, factorName, what, MAX_EMISSION, scale, factor));
+        }
+    }
+
+    /** Checks {@code scale} times the colour of {@code colorKey}. */
+    void checkEmission(String scaleKey, double scale, String colorKey, RGBColor color) throws SceneException {
+        checkEmission(scaleKey, scale, colorKey, "'" + colorKey + "'", color.max());
+    }
+
+    /** The most a light may emit in one channel: the image holds floats. */
+    static final double MAX_EMISSION = Float.MAX_VALUE;
 
     List<Node> list(String key) throws SceneException {
         Node value = values.get(key);

@@ -84,6 +84,36 @@ class MeshReaderTest {
     }
 
     @Test
+    void kdAndKsReachTheShading(@TempDir Path dir) throws Exception {
+        // a quad facing +z lit by a point light of intensity 1 at the eye, 1 unit away, no ambient:
+        // the centre receives irradiance 1 and sees the light's mirror direction, so it shows
+        // Kd / pi (Lambert) plus Ks (the unnormalised Phong lobe at its peak)
+        Files.writeString(dir.resolve("m.mtl"), String.join("\n",
+            "newmtl chalk", "Kd 0.5 0.6 0.7",
+            "newmtl plastic", "Kd 0.2 0.3 0.8", "Ks 0.5 0.25 0.125", "Ns 60", ""));
+        double[][] expected = {
+            {0.5 / Math.PI, 0.6 / Math.PI, 0.7 / Math.PI},
+            {0.2 / Math.PI + 0.5, 0.3 / Math.PI + 0.25, 0.8 / Math.PI + 0.125},
+        };
+        String[] names = {"chalk", "plastic"};
+        for (int i = 0; i < 2; i++) {
+            Files.writeString(dir.resolve("quad.obj"), "mtllib m.mtl\nusemtl " + names[i]
+                + "\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+            Files.writeString(dir.resolve("s.yaml"), "ambient: {radiance: 0}\n"
+                + "lights: [{type: point, position: [0.1, 0.2, 1], intensity: 1}]\nobjects:\n  - {type: mesh, file: quad.obj}\n");
+            World world = SceneLoader.load(dir.resolve("s.yaml"));
+            world.prepare();
+            ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+            assertTrue(world.hit(new Ray().set(0.1, 0.2, 1, 0, 0, -1), sr));
+            Rgb out = new Rgb();
+            sr.material.shade(sr, out);
+            assertEquals(expected[i][0], out.r, 1e-12, names[i]);
+            assertEquals(expected[i][1], out.g, 1e-12, names[i]);
+            assertEquals(expected[i][2], out.b, 1e-12, names[i]);
+        }
+    }
+
+    @Test
     void normalMapKeysOfAMeshObject(@TempDir Path dir) throws Exception {
         // a quad in z = 0 facing +z, with UVs, and a uniform object-space map encoding (0.6, 0, 0.8)
         Files.writeString(dir.resolve("quad.obj"),

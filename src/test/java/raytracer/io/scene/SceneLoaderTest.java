@@ -4,14 +4,20 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import raytracer.brdf.FittedPreset;
+import raytracer.core.WorkerScratch;
 import raytracer.core.World;
+import raytracer.math.Ray;
+import raytracer.math.Rgb;
 import raytracer.shapes.Instance;
 import raytracer.tracers.RayCast;
 
@@ -39,6 +45,20 @@ class SceneLoaderTest {
         }
     }
 
+    /** The radiance the scene's tracer brings back along a ray from (ox, oy, oz) in direction d. */
+    private static Rgb trace(World world, double ox, double oy, double oz, double dx, double dy, double dz) {
+        world.prepare();
+        Rgb out = new Rgb();
+        world.tracer().traceRay(new Ray().set(ox, oy, oz, dx, dy, dz), 0, new WorkerScratch(world), out);
+        return out;
+    }
+
+    private static void assertRgb(double r, double g, double b, Rgb actual, String what) {
+        assertEquals(r, actual.r, 1e-9 * Math.max(1, r), what + ", red");
+        assertEquals(g, actual.g, 1e-9 * Math.max(1, g), what + ", green");
+        assertEquals(b, actual.b, 1e-9 * Math.max(1, b), what + ", blue");
+    }
+
     @Test
     void validSceneLoadsWithItsSettings() throws SceneException {
         World world = SceneLoader.load("s.yaml", BASE + "  - {type: plane, normal: [0, 1, 0]}\n"
@@ -62,6 +82,20 @@ class SceneLoaderTest {
         assertEquals(4, world.viewPlane().numSamples());
         assertTrue(world.tracer() instanceof RayCast);
         assertTrue(world.objects().get(0).getMaterial() != null, "a default material");
+    }
+
+    /** The tracer follows the lights unless the scene names one; whitted and ray-cast cannot take area lights. */
+    @Test
+    void scenesWithAreaLightsGetTheAreaLightingTracer() throws SceneException {
+        assertTrue(SceneLoader.load("s.yaml", BASE).tracer() instanceof raytracer.tracers.Whitted);
+        String area = BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}",
+                                   "{type: disk, center: [0, 5, 0], normal: [0, -1, 0]}");
+        assertTrue(SceneLoader.load("s.yaml", area).tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + area).tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + BASE).tracer() instanceof raytracer.tracers.AreaLighting,
+                   "point lights alone may be sampled too");
+        assertMessage(error("tracer: whitted\n" + area), "s.yaml:1:9:", "'whitted' cannot sample", "area-lighting");
+        assertMessage(error("tracer: ray-cast\n" + area), "s.yaml:1:9:", "'ray-cast' cannot sample", "max-depth: 0");
     }
 
     @Test
@@ -111,6 +145,9 @@ class SceneLoaderTest {
         assertMessage(error(BASE.replace("samples: 3", "samples: 0")), "s.yaml:1:41:", "'samples'");
         assertMessage(error(BASE.replace("samples: 3", "samples: 2.5")), "s.yaml:1:41:", "whole number");
         assertMessage(error(BASE.replace("max-depth: 2", "max-depth: -1")), "s.yaml:1:", "'max-depth'");
+        // each level of recursion holds a hit record per worker and stack frames: 100000 ran out of memory
+        assertMessage(error(BASE.replace("max-depth: 2", "max-depth: 100000")), "s.yaml:1:74:",
+                      "'max-depth' in image must be at most 1000, got 100000");
         assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
         assertMessage(error(BASE.replace("sampler: jittered", "sampler: sobol")), "s.yaml:1:", "sobol", "multi-jittered");
         assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, height");
@@ -125,7 +162,7 @@ class SceneLoaderTest {
         assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "orthographic, pinhole, thin-lens");
         assertMessage(error("camera: {type: orthographic, fov: 30}\n" + BASE), "s.yaml:1:30:", "'fov'", "view-height");
         assertMessage(error("camera: {eye: [0, 0, 0], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "must differ");
-        assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "ray-cast, whitted");
+        assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "area-lighting, ray-cast, whitted");
         assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
         assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
         assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
@@ -150,28 +187,60 @@ class SceneLoaderTest {
 
     @Test
     void fittedModelsByPresetOrValues() throws SceneException {
-        World world = SceneLoader.load("s.yaml", "materials:\n"
+        String materials = "materials:\n"
             + "  a: {type: ward, preset: nickel}\n  b: {type: ward-duer, preset: delrin, seed-compatible: true}\n"
             + "  c: {type: blinn-phong, rho-d: [0.3, 0.2, 0.1], rho-s: [0.05, 0.05, 0.05], exponent: 80}\n"
             + "objects:\n  - {type: sphere, center: [0, 0, 0], material: a}\n  - {type: sphere, center: [2, 0, 0], material: b}\n"
-            + "  - {type: sphere, center: [4, 0, 0], material: c}\n");
-        assertTrue(world.objects().stream().allMatch(o -> o.getMaterial() instanceof raytracer.materials.Fitted));
+            + "  - {type: sphere, center: [4, 0, 0], material: c}\n";
+        // each sphere's top seen and lit from straight above, irradiance 1 (intensity 4 at distance 2):
+        // rho_d / pi plus the lobe at h = n, Ward rho_s / (4 pi a^2), Blinn-Phong rho_s (e + 2) / (2 pi);
+        // seed-compatible drops the diffuse 1/pi
+        FittedPreset nickel = FittedPreset.of("nickel", FittedPreset.Model.WARD);
+        FittedPreset delrin = FittedPreset.of("delrin", FittedPreset.Model.WARD_DUER);
+        double[][] expected = new double[3][3];
+        for (int c = 0; c < 3; c++) {
+            expected[0][c] = channel(nickel.rhoD(), c) / Math.PI
+                             + channel(nickel.rhoS(), c) / (4 * Math.PI * nickel.roughness() * nickel.roughness());
+            expected[1][c] = channel(delrin.rhoD(), c)
+                             + channel(delrin.rhoS(), c) / (4 * Math.PI * delrin.roughness() * delrin.roughness());
+            expected[2][c] = new double[] {0.3, 0.2, 0.1}[c] / Math.PI + 0.05 * 82 / (2 * Math.PI);
+        }
+        for (int i = 0; i < 3; i++) {
+            World world = SceneLoader.load("s.yaml", "ambient: {radiance: 0}\nlights: [{type: point, position: ["
+                                           + 2 * i + ", 3, 0], intensity: 4}]\n" + materials);
+            assertRgb(expected[i][0], expected[i][1], expected[i][2], trace(world, 2 * i, 3, 0, 0, -1, 0),
+                      "material " + "abc".charAt(i));
+        }
         assertMessage(error("materials:\n  a: {type: ward, preset: gold}\nobjects: []\n"), "s.yaml:2:", "'gold'",
                       "delrin, green-acrylic, nickel");
         assertMessage(error("materials:\n  a: {type: ward, exponent: 3}\nobjects: []\n"), "s.yaml:2:", "'exponent'", "alpha");
         assertMessage(error("materials:\n  a: {type: ward, alpha: 0}\nobjects: []\n"), "s.yaml:2:", "'alpha'");
     }
 
+    private static double channel(raytracer.math.RGBColor color, int c) {
+        return c == 0 ? color.r() : c == 1 ? color.g() : color.b();
+    }
+
     @Test
     void texturesAndEnvironmentMaps(@TempDir Path dir) throws IOException, SceneException {
-        Path hdr = raytracer.io.obj.TestAssets.path("env/venice_sunset_1k.hdr").toAbsolutePath();
-        Files.writeString(dir.resolve("s.yaml"), "environment: {file: " + hdr + ", intensity: 0.5}\n"
+        // a Radiance map of 4 x 2 texels, the top row (128 + 0.5) 2^(129 - 136) = 1.00390625, the bottom 0.50390625
+        ByteArrayOutputStream hdr = new ByteArrayOutputStream();
+        hdr.writeBytes("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n".getBytes(StandardCharsets.US_ASCII));
+        for (int i = 0; i < 8; i++) {
+            int m = i < 4 ? 128 : 64;
+            hdr.writeBytes(new byte[] {(byte) m, (byte) m, (byte) m, (byte) 129});
+        }
+        Files.write(dir.resolve("sky.hdr"), hdr.toByteArray());
+        Files.writeString(dir.resolve("s.yaml"), "environment: {file: sky.hdr, intensity: 0.5}\nambient: {radiance: 0}\n"
             + "materials:\n  floor: {type: matte, texture: {type: checker, size: 0.5}}\n"
-            + "  chrome: {type: reflective, kr: 1, reflection-map: {file: " + hdr + "}}\n"
+            + "  chrome: {type: reflective, kr: 1, reflection-map: {file: sky.hdr}}\n"
             + "objects:\n  - {type: plane, normal: [0, 1, 0], material: floor}\n"
             + "  - {type: sphere, center: [0, 1, 0], material: chrome}\n");
         World world = SceneLoader.load(dir.resolve("s.yaml"));
-        assertTrue(world.background() instanceof raytracer.textures.EnvironmentMap);
+        // the scene's environment, at half intensity: its top row straight up
+        assertRgb(0.501953125, 0.501953125, 0.501953125, trace(world, 5, 1, 0, 0, 1, 0), "up");
+        // the chrome's own map at full intensity: the sphere's top mirrors the sky straight up
+        assertRgb(1.00390625, 1.00390625, 1.00390625, trace(world, 0, 5, 0, 0, -1, 0), "the chrome's top");
         Files.writeString(dir.resolve("bad.yaml"), "materials:\n  m: {type: matte, texture: {type: image, file: missing.png}}\n"
             + "objects: []\n");
         SceneException missing = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("bad.yaml")));
@@ -183,13 +252,25 @@ class SceneLoaderTest {
 
     @Test
     void glassAndFresnelMirrors() throws SceneException {
-        World world = SceneLoader.load("s.yaml", "materials:\n"
+        World world = SceneLoader.load("s.yaml", "background: [1, 1, 1]\nambient: {radiance: 0}\nmaterials:\n"
             + "  glass: {type: dielectric, ior: 1.5, absorption: [0.1, 0, 0.2]}\n"
             + "  brown: {type: reflective, kr: 0.5, fresnel: schlick, reflect-color: [0.6, 0.4, 0.2]}\n"
             + "objects:\n  - {type: sphere, center: [0, 0, 0], material: glass}\n"
             + "  - {type: sphere, center: [3, 0, 0], material: brown}\n");
-        assertTrue(world.objects().get(0).getMaterial() instanceof raytracer.materials.Dielectric);
-        assertTrue(world.objects().get(1).getMaterial().tracesSecondaryRays());
+        assertEquals(1.5, ((raytracer.materials.Dielectric) world.objects().get(0).getMaterial()).ior(), 0);
+        // glass with the loaded absorption gives what glass built with it gives, and none does not
+        World built = SceneLoader.load("s.yaml", "background: [1, 1, 1]\nambient: {radiance: 0}\nobjects: []\n");
+        raytracer.shapes.Sphere sphere = new raytracer.shapes.Sphere(raytracer.math.Point3D.ORIGIN, 1);
+        sphere.setMaterial(new raytracer.materials.Dielectric(1.5, new raytracer.math.RGBColor(0.1, 0, 0.2), 0, 1000));
+        built.addObject(sphere);
+        Rgb loaded = trace(world, 0.3, 0.2, 5, 0, 0, -1);
+        Rgb expected = trace(built, 0.3, 0.2, 5, 0, 0, -1);
+        assertRgb(expected.r, expected.g, expected.b, loaded, "glass");
+        assertTrue(loaded.r < loaded.g - 0.05 && loaded.b < loaded.r - 0.05, "red and blue absorbed: " + loaded.r + ", " + loaded.b);
+        // the brown Fresnel mirror in a white world without lights: Schlick's kr + (1 - kr)(1 - cos)^5 of its colour
+        assertRgb(0.3, 0.2, 0.1, trace(world, 3, 5, 0, 0, -1, 0), "mirror at normal incidence");
+        double grazing = 0.5 + 0.5 * Math.pow(0.5, 5);
+        assertRgb(0.6 * grazing, 0.4 * grazing, 0.2 * grazing, trace(world, 3 + Math.sqrt(0.75), 5, 0, 0, -1, 0), "mirror at 60 degrees");
         assertMessage(error("materials:\n  g: {type: dielectric, ior: 0}\n" + "objects: []\n"), "s.yaml:2:", "'ior'");
         assertMessage(error("materials:\n  g: {type: dielectric, absorption: [0, -1, 0]}\nobjects: []\n"), "s.yaml:2:", "negative");
         assertMessage(error("materials:\n  m: {type: reflective, fresnel: exact}\nobjects: []\n"), "s.yaml:2:", "'exact'", "none, schlick");

@@ -24,7 +24,6 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Rgb;
 import raytracer.math.Vector3D;
-import raytracer.textures.Checker;
 import raytracer.textures.ConstantColor;
 import raytracer.textures.ImageTexture;
 
@@ -53,7 +52,6 @@ class TextureReaderTest {
         assertInstanceOf(ImageTexture.class, image);
         Texture constant = reader.texture(node("{type: constant, color: [0.25, 0.5, 0.75]}"));
         Texture checker = reader.texture(node("{type: checker, color-a: [1, 0, 0], color-b: [0, 0, 1], size: 0.5}"));
-        assertInstanceOf(Checker.class, checker);
 
         ShadeRec sr = new WorkerScratch(new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 2, 1),
             new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE))).shadeRec(0);
@@ -77,6 +75,25 @@ class TextureReaderTest {
             assertEquals(0.75, out.b, 0);
         }
         assertInstanceOf(ConstantColor.class, constant);
+        // squares of 0.5 in u and v, colour a in the square at the origin, alternating along each axis
+        double[][] cells = {{0.25, 0.25, 1, 0}, {0.75, 0.25, 0, 1}, {0.25, 0.75, 0, 1}, {0.75, 0.75, 1, 0},
+                            {-0.25, 0.25, 0, 1}, {1.25, 1.25, 1, 0}, {1.25, 1.75, 0, 1}, {0.49, 0.01, 1, 0}, {0.51, 0.01, 0, 1}};
+        for (double[] c : cells) {
+            sr.u = c[0];
+            sr.v = c[1];
+            checker.getColor(sr, out);
+            assertEquals(c[2], out.r, 0, "red at " + c[0] + ", " + c[1]);
+            assertEquals(0, out.g, 0);
+            assertEquals(c[3], out.b, 0, "blue at " + c[0] + ", " + c[1]);
+        }
+        Texture defaults = reader.texture(node("{type: checker}"));
+        sr.u = 0.05;
+        sr.v = 0.05;
+        defaults.getColor(sr, out);
+        assertEquals(1, out.r, 0, "color-a defaults to white");
+        sr.u = 0.15;
+        defaults.getColor(sr, out);
+        assertEquals(0.1, out.r, 0, "color-b defaults to grey 0.1, squares of 0.1");
 
         SceneException missing = assertThrows(SceneException.class, () -> reader.texture(node("{type: image, file: nowhere.png}")));
         assertTrue(missing.getMessage().contains(dir.resolve("nowhere.png").toString()), missing.getMessage());
