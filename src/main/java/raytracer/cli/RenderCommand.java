@@ -19,16 +19,21 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
 import raytracer.accel.ObjectBVH;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.image.DisplayEncoding;
 import raytracer.image.FalseColor;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
+import raytracer.io.scene.LoadReport;
+import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
+import raytracer.render.Workers;
 import raytracer.tracers.BvhCost;
 
 /**
@@ -58,7 +63,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
     Integer samples;
 
-    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Renderer.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
+    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 
     @Option(names = "--seed", paramLabel = "S", description = "Random seed; the same seed gives the same image. Default: ${DEFAULT-VALUE}.")
@@ -158,25 +163,35 @@ public final class RenderCommand implements Callable<Integer> {
         Aggregation.Mode accelMode = usage(() -> Aggregation.Mode.parse(accel));
         boolean costView = usage(this::parseView);
         ShadingPass shadingPass = pass == null ? null : usage(() -> ShadingPass.parse(pass));
-        Boolean linear = encoding == null ? null : usage(this::parseEncoding);
+        DisplayEncoding displayEncoding = encoding == null ? null : usage(this::parseEncoding);
+        try (Workers workers = new Workers(threads)) {
+            return render(workers, out, accelMode, costView, shadingPass, displayEncoding);
+        }
+    }
+
+    private int render(Workers workers, Path out, Aggregation.Mode accelMode, boolean costView, ShadingPass shadingPass,
+                       DisplayEncoding displayEncoding) throws Exception {
         long loadStart = System.nanoTime();
-        World world = loadScene();
+        LoadedScene loaded = workers.call(this::loadScene);
         long loadNanos = System.nanoTime() - loadStart;
         if (!quiet) {
-            world.warnings().forEach(w -> spec.commandLine().getErr().println("render: warning: " + w));
+            loaded.report().warnings().forEach(w -> spec.commandLine().getErr().println("render: warning: " + w));
         }
+        World world = loaded.world();
         applyOverrides(world);
+        RayTreeSettings rayTree = loaded.rayTree();
         if (shadingPass != null) {
-            world.setPass(shadingPass);
+            rayTree = rayTree.withPass(shadingPass);
         }
         if (cutoff != null) {
-            world.setCutoff(cutoff);
+            rayTree = rayTree.withCutoff(cutoff);
         }
-        if (linear != null) {
-            world.setLinearDisplay(linear);
-        }
+        DisplayEncoding display = displayEncoding != null ? displayEncoding : loaded.encoding();
         long prepareStart = System.nanoTime();
-        world.prepare(objects -> Aggregation.organize(objects, accelMode));
+        workers.call(() -> {
+            world.prepare(objects -> Aggregation.organize(objects, accelMode));
+            return null;
+        });
         long prepareNanos = System.nanoTime() - prepareStart;
         if (costView) {
             world.setTracer(BvhCost::new);
@@ -185,10 +200,10 @@ public final class RenderCommand implements Callable<Integer> {
         ViewPlane vp = world.viewPlane();
         PrintWriter err = spec.commandLine().getErr();
         for (int i = 1; i < repeat; i++) {
-            RenderStats warmup = new Renderer(world, threads, seed).render(new Film(vp.hres(), vp.vres()));
+            RenderStats warmup = new Renderer(world, rayTree, workers, seed).render(new Film(vp.hres(), vp.vres()));
             printRepeat(err, i, warmup);
         }
-        Renderer renderer = new Renderer(world, threads, seed);
+        Renderer renderer = new Renderer(world, rayTree, workers, seed);
         Film film = new Film(vp.hres(), vp.vres());
         RenderStats stats;
         if (!quiet && System.console() != null) {
@@ -213,12 +228,12 @@ public final class RenderCommand implements Callable<Integer> {
             err.printf("bvh-cost: " + format + " to " + format + " bounding-volume tests per %s (black to white)%n",
                        range[0], range[1], vp.numSamples() == 1 ? "pixel" : "ray, averaged over each pixel");
         }
-        ImageWriters.write(film, costView ? 1 : vp.exposure(), costView || !world.linearDisplay(), out);
+        ImageWriters.write(film, costView ? 1 : vp.exposure(), costView || display.srgbCurve(), out);
         if (!quiet) {
             err.println(summary(stats, out));
         }
         if (this.stats) {
-            printStats(err, world, loadNanos, prepareNanos, stats);
+            printStats(err, world, loaded.report(), loadNanos, prepareNanos, stats);
         }
         return 0;
     }
@@ -227,12 +242,9 @@ public final class RenderCommand implements Callable<Integer> {
         err.printf("render %d of %d: %.3f s, %.2f M rays/s%n", i, repeat, s.seconds(), s.raysPerSecond() / 1e6);
     }
 
-    private boolean parseEncoding() {
-        return switch (encoding) {
-            case "srgb" -> false;
-            case "linear" -> true;
-            default -> throw new IllegalArgumentException("unknown --encoding '" + encoding + "'; allowed: linear, srgb");
-        };
+    private DisplayEncoding parseEncoding() {
+        return DisplayEncoding.named(encoding).orElseThrow(() -> new IllegalArgumentException(
+            "unknown --encoding '" + encoding + "'; allowed: " + DisplayEncoding.NAMES));
     }
 
     /** Runs an option's parser, turning its complaint into a usage error (exit code 2). */
@@ -252,11 +264,11 @@ public final class RenderCommand implements Callable<Integer> {
         };
     }
 
-    private static void printStats(PrintWriter err, World world, long loadNanos, long prepareNanos, RenderStats s) {
+    private static void printStats(PrintWriter err, World world, LoadReport report, long loadNanos, long prepareNanos, RenderStats s) {
         err.printf("stats: load scene %.3f s", loadNanos / 1e9);
-        world.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
+        report.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
         err.println();
-        world.statistics().forEach(line -> err.println("stats: " + line));
+        report.statistics().forEach(line -> err.println("stats: " + line));
         boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
         err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
                    prepareNanos / 1e9, s.seconds());
@@ -283,7 +295,7 @@ public final class RenderCommand implements Callable<Integer> {
         requireAtLeast("--height", height, 1);
         requireAtLeast("--spp", samples, 1);
         requireWithin("--max-depth", maxDepth, 0, ViewPlane.MAX_DEPTH);
-        requireWithin("--threads", threads, 1, Renderer.MAX_THREADS);
+        requireWithin("--threads", threads, 1, Workers.MAX_THREADS);
         requireAtLeast("--repeat", repeat, 1);
         if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
             throw new CommandLine.ParameterException(spec.commandLine(), "--cutoff must be in [0, 1), got " + cutoff);
@@ -338,7 +350,7 @@ public final class RenderCommand implements Callable<Integer> {
         return null;
     }
 
-    private World loadScene() throws SceneException, IOException {
+    private LoadedScene loadScene() throws SceneException, IOException {
         if (scene != null) {
             return SceneLoader.load(scene);
         }

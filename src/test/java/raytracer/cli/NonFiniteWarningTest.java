@@ -9,14 +9,14 @@ import org.junit.jupiter.api.Test;
 import raytracer.image.Film;
 import raytracer.render.NonFiniteScene;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 
 /** The summary line that the command prints after a render warns when samples were dropped, with their count. */
 class NonFiniteWarningTest {
 
     @Test
     void summaryWarnsOfDroppedSamples() {
-        RenderStats stats = new Renderer(NonFiniteScene.world(), 2, 1).render(new Film(NonFiniteScene.W, NonFiniteScene.H));
+        RenderStats stats = Renders.render(NonFiniteScene.world(), 2, 1, new Film(NonFiniteScene.W, NonFiniteScene.H));
         assertEquals(NonFiniteScene.NON_FINITE_SAMPLES, stats.nonFiniteSamples());
         String line = RenderCommand.summary(stats, Path.of("out.png"));
         assertTrue(line.endsWith(", WARNING: " + NonFiniteScene.NON_FINITE_SAMPLES + " non-finite samples dropped"), line);
