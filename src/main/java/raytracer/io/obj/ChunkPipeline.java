@@ -3,7 +3,6 @@ package raytracer.io.obj;
 import java.io.IOException;
 import java.util.ArrayDeque;
 import java.util.Deque;
-import java.util.Iterator;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
@@ -80,21 +79,8 @@ final class ChunkPipeline {
         }
     }
 
-    /**
-     * Appends the oldest chunk. While another worker still parses it, this thread parses the newest
-     * chunks, those it forked last and nobody has taken, rather than wait idle in the join: other
-     * workers take the oldest first, so the two ends meet without contention.
-     */
     private static void mergeOldest(Deque<Parse> inFlight, Merge merge) throws ObjException {
         Parse oldest = inFlight.remove();
-        Iterator<Parse> newestFirst = inFlight.descendingIterator();
-        while (!oldest.isDone() && newestFirst.hasNext()) {
-            Parse newest = newestFirst.next();
-            if (!newest.tryUnfork()) {
-                break; // taken by another worker, and so are the older ones
-            }
-            newest.invoke();
-        }
         merge.append(oldest.text, oldest.join());
     }
 
