@@ -1,29 +1,50 @@
 package raytracer;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayInputStream;
+import java.io.DataInputStream;
 import java.io.IOException;
+import java.io.InputStream;
+import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * Keeps the layering of STYLE.md honest by reading imports: dependencies point down the chain
- * math <- core <- families <- image, render, io <- cli, families do not use each other (but for
- * the listed exceptions), and render sees only core.
+ * Keeps the layering of STYLE.md honest: dependencies point down the chain math &lt;- core &lt;-
+ * families &lt;- image, render, io.obj, io.scene &lt;- cli, families do not use each other (but for
+ * the listed exceptions), render sees only core, math and image. A dependency is any name of a
+ * class of another package: read from the source with comments and string literals taken out (so
+ * an import, a fully qualified name written inline, and a constant the compiler copies into the
+ * caller all count), and from the compiled class's constant pool (so a type used without being
+ * named, through a method's signature, counts too).
  */
 class ArchitectureTest {
     private static final Path SOURCES = Path.of("src/main/java/raytracer");
-    private static final Pattern IMPORT = Pattern.compile("^import (?:static )?raytracer\\.([a-z.]+)\\.[A-Z]", Pattern.MULTILINE);
+    /** A package of ours followed by a class name (or an import's '*'). */
+    private static final Pattern SOURCE_REFERENCE = Pattern.compile("\\braytracer((?:\\.[a-z][a-z0-9_]*)+)\\.(?:[A-Z]|\\*)");
+    /**
+     * The same in a class file: a binary name (raytracer/core/World), alone or in a descriptor or
+     * signature, where it follows an 'L' (Lraytracer/core/World;).
+     */
+    private static final Pattern BINARY_REFERENCE =
+        Pattern.compile("(?<![A-Za-z0-9_$/])L?raytracer((?:/[a-z][a-z0-9_]*)+)/[A-Z]");
 
-    /** For each package, the packages (besides itself) it may import from. */
+    private static final Set<String> FAMILIES = Set.of("samplers", "cameras", "shapes", "shapes.mesh", "accel", "brdf",
+                                                       "btdf", "textures", "materials", "lights", "tracers");
+
+    /** For each package, the packages (besides itself) it may use. */
     private static final Map<String, Set<String>> ALLOWED = Map.ofEntries(
         Map.entry("math", Set.of()),
         Map.entry("core", Set.of("math")),
@@ -43,31 +64,207 @@ class ArchitectureTest {
         Map.entry("image.chart", Set.of("image")),
         // exact images, computed apart from the renderer's code so that they can check it
         Map.entry("reference", Set.of("math", "image")),
-        Map.entry("render", Set.of("math", "core", "image")));
+        Map.entry("render", Set.of("math", "core", "image")),
+        Map.entry("io.obj", union(FAMILIES, Set.of("math", "core", "image"))),
+        // a scene's mesh objects are OBJ files: the scene reader uses the OBJ reader, not the reverse
+        Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "reference"))),
+        Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.scene", "reference", "image.chart"))));
+
+    private static Set<String> union(Set<String> a, Set<String> b) {
+        Set<String> all = new HashSet<>(a);
+        all.addAll(b);
+        return all;
+    }
 
     @Test
-    void importsPointDownTheChain() throws IOException {
+    void dependenciesPointDownTheChain() throws IOException, URISyntaxException {
         List<String> violations = new ArrayList<>();
+        Set<String> packages = new TreeSet<>();
         int files = 0;
         try (Stream<Path> paths = Files.walk(SOURCES)) {
             for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
                 files++;
                 String pkg = SOURCES.relativize(file.getParent()).toString().replace('/', '.');
-                Set<String> allowed = ALLOWED.get(pkg);
-                if (allowed == null) {
-                    continue; // io.*, scenes and cli may use every family
+                packages.add(pkg);
+                for (String used : sourceReferences(Files.readString(file))) {
+                    check(pkg, used, SOURCES.relativize(file).toString(), violations);
                 }
-                Matcher m = IMPORT.matcher(Files.readString(file));
-                while (m.find()) {
-                    String target = m.group(1);
-                    if (!target.equals(pkg) && !allowed.contains(target)) {
-                        violations.add(SOURCES.relativize(file) + " imports raytracer." + target);
-                    }
+            }
+        }
+        Path classes = Path.of(raytracer.core.World.class.getProtectionDomain().getCodeSource().getLocation().toURI())
+            .resolve("raytracer");
+        int classFiles = 0;
+        try (Stream<Path> paths = Files.walk(classes)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".class"))::iterator) {
+                classFiles++;
+                String pkg = classes.relativize(file.getParent()).toString().replace('/', '.');
+                for (String used : classReferences(Files.readAllBytes(file))) {
+                    check(pkg, used, classes.relativize(file).toString(), violations);
                 }
             }
         }
         assertTrue(files > 50, "the sources were not found from " + Path.of("").toAbsolutePath());
-        assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", violations));
+        assertTrue(classFiles >= files, "the compiled classes were not found in " + classes);
+        Set<String> unruled = new TreeSet<>(packages);
+        unruled.removeAll(ALLOWED.keySet());
+        assertEquals(Set.of(), unruled, "packages without a rule here");
+        assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", new TreeSet<>(violations)));
+    }
+
+    private static void check(String pkg, String used, String where, List<String> violations) {
+        if (!used.equals(pkg) && !ALLOWED.getOrDefault(pkg, Set.of()).contains(used)) {
+            violations.add(where + " uses raytracer." + used);
+        }
+    }
+
+    /** The packages of ours that a source file names outside its comments and literals. */
+    static Set<String> sourceReferences(String source) {
+        Set<String> packages = new TreeSet<>();
+        Matcher m = SOURCE_REFERENCE.matcher(codeOnly(source));
+        while (m.find()) {
+            packages.add(m.group(1).substring(1));
+        }
+        packages.remove(""); // the file's own package line names no class after it
+        return packages;
+    }
+
+    /**
+     * The source with comments, string and character literals and text blocks blanked out
+     * (newlines kept), so that only code is left to search.
+     */
+    static String codeOnly(String source) {
+        StringBuilder code = new StringBuilder(source.length());
+        int i = 0;
+        int n = source.length();
+        while (i < n) {
+            int end;
+            if (source.startsWith("//", i)) {
+                end = source.indexOf('\n', i);
+                end = end < 0 ? n : end;
+            } else if (source.startsWith("/*", i)) {
+                end = source.indexOf("*/", i + 2);
+                end = end < 0 ? n : end + 2;
+            } else if (source.startsWith("\"\"\"", i)) {
+                end = closing(source, i + 3, "\"\"\"");
+            } else if (source.charAt(i) == '"' || source.charAt(i) == '\'') {
+                end = closing(source, i + 1, String.valueOf(source.charAt(i)));
+            } else {
+                code.append(source.charAt(i++));
+                continue;
+            }
+            for (int k = i; k < end; k++) {
+                code.append(source.charAt(k) == '\n' ? '\n' : ' ');
+            }
+            i = end;
+        }
+        return code.toString();
+    }
+
+    /** The index just past the first unescaped {@code quote} at or after {@code from}. */
+    private static int closing(String source, int from, String quote) {
+        int i = from;
+        while (i < source.length()) {
+            if (source.charAt(i) == '\\') {
+                i += 2;
+            } else if (source.startsWith(quote, i)) {
+                return i + quote.length();
+            } else {
+                i++;
+            }
+        }
+        return source.length();
+    }
+
+    /**
+     * The packages of ours that a class file refers to: class names, field and method
+     * descriptors, generic signatures and annotation types in its constant pool; string
+     * constants are text, not references, and are left out.
+     */
+    static Set<String> classReferences(byte[] classFile) throws IOException {
+        DataInputStream in = new DataInputStream(new ByteArrayInputStream(classFile));
+        if (in.readInt() != 0xCAFEBABE) {
+            throw new IOException("not a class file");
+        }
+        in.readUnsignedShort(); // minor version
+        in.readUnsignedShort(); // major version
+        int count = in.readUnsignedShort();
+        String[] utf8 = new String[count];
+        Set<Integer> stringConstants = new HashSet<>();
+        // constant pool tags and sizes: JVM specification (Java SE 17), section 4.4
+        for (int i = 1; i < count; i++) {
+            int tag = in.readUnsignedByte();
+            switch (tag) {
+                case 1 -> utf8[i] = in.readUTF();
+                case 8 -> stringConstants.add(in.readUnsignedShort());
+                case 7, 16, 19, 20 -> in.readUnsignedShort();
+                case 15 -> {
+                    in.readUnsignedByte();
+                    in.readUnsignedShort();
+                }
+                case 3, 4, 9, 10, 11, 12, 17, 18 -> in.readInt();
+                case 5, 6 -> {
+                    in.readLong();
+                    i++; // a long or double takes two entries
+                }
+                default -> throw new IOException("unknown constant pool tag " + tag + " at entry " + i);
+            }
+        }
+        Set<String> packages = new TreeSet<>();
+        for (int i = 1; i < count; i++) {
+            if (utf8[i] != null && !stringConstants.contains(i)) {
+                Matcher m = BINARY_REFERENCE.matcher(utf8[i]);
+                while (m.find()) {
+                    packages.add(m.group(1).substring(1).replace('/', '.'));
+                }
+            }
+        }
+        return packages;
+    }
+
+    // ---- the scanners themselves, on planted references ----
+
+    @Test
+    void theSourceScanFindsInlineNamesAndSkipsCommentsAndLiterals() {
+        String source = """
+            package raytracer.render;
+
+            import raytracer.core.World;
+            import static raytracer.math.Rounding.gamma;
+            import raytracer.image.*;
+
+            /** Not a use: {@link raytracer.accel.FlatBVH}. */
+            final class Planted {
+                // nor this: raytracer.shapes.Sphere
+                /* nor this: raytracer.lights.PointLight */
+                String s = "raytracer.textures.Checker \\" raytracer.cameras.Pinhole";
+                char c = '"';
+                String t = \"""
+                    raytracer.samplers.Jittered
+                    \""";
+                Object m = new raytracer.materials.Dielectric(1.5, null, 0, 1);
+                int n = raytracer.io.obj.LineChunks.CHUNK;
+            }
+            """;
+        assertEquals(new TreeSet<>(Set.of("core", "math", "image", "materials", "io.obj")), sourceReferences(source));
+    }
+
+    /** Names other packages only inline and in a string; compiled, its constant pool holds both. */
+    static final class Planted {
+        final Object material = new raytracer.materials.Matte(0.1, 0.9, raytracer.math.RGBColor.WHITE);
+        final String text = "raytracer/tracers/Whitted";
+
+        raytracer.brdf.Lambertian brdf() {
+            return null;
+        }
+    }
+
+    @Test
+    void theClassScanFindsInlineNamesAndSignaturesAndSkipsStrings() throws IOException {
+        byte[] bytes;
+        try (InputStream in = Planted.class.getResourceAsStream("ArchitectureTest$Planted.class")) {
+            bytes = in.readAllBytes();
+        }
+        assertEquals(new TreeSet<>(Set.of("materials", "math", "brdf")), classReferences(bytes));
     }
 
     /** The chart library stays behind raytracer.image.chart, so it can be swapped in one place. */

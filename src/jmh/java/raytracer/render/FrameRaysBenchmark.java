@@ -53,7 +53,7 @@ public class FrameRaysBenchmark {
 
     @Setup
     public void setUp() throws Exception {
-        world = SceneLoader.load(Path.of("scenes", scene + ".yaml"));
+        world = SceneLoader.load(Path.of("scenes", scene + ".yaml")).world();
         world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));
         ViewPlane vp = world.viewPlane();
         int width = vp.hres();

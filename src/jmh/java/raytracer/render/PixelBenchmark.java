@@ -13,10 +13,12 @@ import org.openjdk.jmh.annotations.OutputTimeUnit;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.image.Film;
+import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneLoader;
 
 /**
@@ -31,6 +33,7 @@ import raytracer.io.scene.SceneLoader;
 @Measurement(iterations = 5, time = 2)
 @Fork(1)
 public class PixelBenchmark {
+    private Workers workers;
     private Renderer renderer;
     private WorkerScratch scratch;
     private Film film;
@@ -40,13 +43,20 @@ public class PixelBenchmark {
 
     @Setup
     public void setUp() throws Exception {
-        World world = SceneLoader.load("default scene", defaultScene());
+        LoadedScene loaded = SceneLoader.load("default scene", defaultScene());
+        World world = loaded.world();
         world.prepare();
-        renderer = new Renderer(world, 1, 1);
-        scratch = new WorkerScratch(world);
+        workers = new Workers(1); // renderPixel runs on the benchmark's thread; the pool stays idle
+        renderer = new Renderer(world, loaded.rayTree(), workers, 1);
+        scratch = new WorkerScratch(world, loaded.rayTree());
         width = world.viewPlane().hres();
         height = world.viewPlane().vres();
         film = new Film(width, height);
+    }
+
+    @TearDown
+    public void tearDown() {
+        workers.close();
     }
 
     private static String defaultScene() throws IOException {

@@ -2,7 +2,6 @@ package raytracer.accel;
 
 import java.util.HashMap;
 import java.util.Map;
-import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveAction;
 
 /**
@@ -84,7 +83,7 @@ public final class MedianSplitBuilder {
         int[] records = new int[FlatBVH.RECORD * interior];
         Job job = new Job(boxes, order, records, sizes, 0, 0, n, longestAxis(root, 0));
         if (n > parallelThreshold) {
-            ForkJoinPool.commonPool().invoke(job);
+            job.invoke(); // its subtrees fork into the caller's pool (the run's one pool), else the common pool
         } else {
             job.compute();
         }

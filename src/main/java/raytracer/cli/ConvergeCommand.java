@@ -19,14 +19,17 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
 import raytracer.core.ViewPlane;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
 import raytracer.image.AtomicFile;
 import raytracer.image.ErrorMetrics;
 import raytracer.image.Film;
 import raytracer.io.scene.SceneException;
+import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
+import raytracer.render.Workers;
 import raytracer.samplers.Samplers;
 
 /**
@@ -34,7 +37,7 @@ import raytracer.samplers.Samplers;
  * one or more configurations, measures each image's error against a reference and prints a table,
  * the slope of each curve, and a log-log plot of error against render time (issue 13).
  */
-@Command(name = "converge", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class, sortOptions = false,
+@Command(name = "converge", mixinStandardHelpOptions = true, versionProvider = Version.class, sortOptions = false,
          description = {"Renders SCENE at several sample counts (--spp) and/or time budgets (--time), for each configuration "
                         + "(--config), compares each image with a reference and prints a table of the errors; writes a log-log "
                         + "plot of relative RMSE against render time, one curve per configuration.",
@@ -110,6 +113,9 @@ final class ConvergeCommand implements Callable<Integer> {
     @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
     boolean verbose;
 
+    /** The run's one pool, open while {@link #converge} runs. */
+    private Workers workers;
+
     @Spec
     CommandSpec spec;
 
@@ -134,14 +140,23 @@ final class ConvergeCommand implements Callable<Integer> {
 
     private int converge(PrintWriter err) throws Exception {
         List<ConvergeConfig> curves = validate();
+        try (Workers pool = new Workers(threads)) {
+            workers = pool;
+            return converge(curves, err);
+        } finally {
+            workers = null;
+        }
+    }
+
+    private int converge(List<ConvergeConfig> curves, PrintWriter err) throws Exception {
         PrintWriter note = quiet ? new PrintWriter(PrintWriter.nullWriter()) : err;
         Path plotFile = plot != null ? plot : Path.of(stem(scene) + "-convergence.png");
         checkWritable(plotFile, ".png");
         if (csv != null) {
             checkWritable(csv, "");
         }
-        World base = load(ConvergeConfig.SCENE, err);
-        ViewPlane vp = base.viewPlane();
+        LoadedScene base = load(ConvergeConfig.SCENE, err);
+        ViewPlane vp = base.world().viewPlane();
         ConvergeReference.Image ref = reference(base, note);
         List<ConvergeRow> rows = new ArrayList<>();
         int total = curves.size() * (spp.size() + budgets.size());
@@ -207,25 +222,24 @@ final class ConvergeCommand implements Callable<Integer> {
      * The scene with a configuration's overrides and the image size, prepared for rendering; its
      * warnings go to {@code warnings} unless that is null.
      */
-    private World load(ConvergeConfig config, PrintWriter warnings) throws SceneException {
-        World world = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
+    private LoadedScene load(ConvergeConfig config, PrintWriter warnings) throws SceneException {
+        LoadedScene loaded = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
+        World world = loaded.world();
         if (!quiet && warnings != null) {
-            world.warnings().forEach(w -> warnings.println("render converge: warning: " + w));
+            loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + w));
         }
         ViewPlane vp = world.viewPlane();
         if (config.sampler() != null) {
             vp = vp.withSampler(Samplers.byName(config.sampler()));
         }
         world.setViewPlane(vp.withResolution(width != null ? width : vp.hres(), height != null ? height : vp.vres()));
-        if (config.cutoff() != null) {
-            world.setCutoff(config.cutoff());
-        }
+        RayTreeSettings rayTree = config.cutoff() != null ? loaded.rayTree().withCutoff(config.cutoff()) : loaded.rayTree();
         world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));
-        return world;
+        return new LoadedScene(world, rayTree, loaded.encoding(), loaded.report());
     }
 
-    private ConvergeReference.Image reference(World base, PrintWriter note) throws Exception {
-        ViewPlane vp = base.viewPlane();
+    private ConvergeReference.Image reference(LoadedScene base, PrintWriter note) throws Exception {
+        ViewPlane vp = base.world().viewPlane();
         if (!List.of("auto", "closed-form", "self").contains(reference)) {
             Film film = ConvergeReference.fromFile(Path.of(reference), vp.hres(), vp.vres());
             note.println("converge: reference: " + reference);
@@ -245,10 +259,10 @@ final class ConvergeCommand implements Callable<Integer> {
     /** Renders one configuration: a warm-up, then each sample count and each time budget. */
     private void measure(ConvergeConfig config, Film ref, double exposure, List<ConvergeRow> rows, int total, PrintWriter note)
             throws SceneException {
-        World world = load(config, null);
-        ViewPlane vp = world.viewPlane();
-        String lights = ConvergeReport.lightSamples(world);
-        String name = config.name(Samplers.nameOf(vp.sampler()), lights, world.cutoff());
+        LoadedScene world = load(config, null);
+        ViewPlane vp = world.world().viewPlane();
+        String lights = ConvergeReport.lightSamples(world.world());
+        String name = config.name(Samplers.nameOf(vp.sampler()), lights, world.rayTree().cutoff());
         int warmSpp = Math.max(WARM_UP_MIN_SPP, spp.isEmpty() ? 1 : spp.get(0));
         Film film = new Film(vp.hres(), vp.vres());
         RenderStats warm = render(withSamples(world, warmSpp), film, seed, name + ", warm-up");
@@ -266,14 +280,14 @@ final class ConvergeCommand implements Callable<Integer> {
         }
     }
 
-    private static World withSamples(World world, int n) {
-        world.setViewPlane(world.viewPlane().withSamples(n));
-        return world;
+    private static LoadedScene withSamples(LoadedScene scene, int n) {
+        scene.world().setViewPlane(scene.world().viewPlane().withSamples(n));
+        return scene;
     }
 
     /** One render into {@code film}, with a progress bar on a terminal. */
-    private RenderStats render(World world, Film film, long renderSeed, String label) {
-        Renderer renderer = new Renderer(world, threads, renderSeed);
+    private RenderStats render(LoadedScene scene, Film film, long renderSeed, String label) {
+        Renderer renderer = new Renderer(scene.world(), scene.rayTree(), workers, renderSeed);
         if (quiet || System.console() == null) {
             return renderer.render(film);
         }

@@ -9,6 +9,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.io.scene.LoadedScene;
 import raytracer.image.ErrorMetrics;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
@@ -104,11 +105,12 @@ final class ConvergeReference {
      * average's own noise: with independent halves of equal variance, its RMSE is RMSE(a, b) / 2.
      * Read from the cache when it is there and stored in it when not ({@code cache} null: neither).
      */
-    static Image rendered(Path scene, byte[] sceneBytes, World world, int spp, long seed, ReferenceCache cache,
+    static Image rendered(Path scene, byte[] sceneBytes, LoadedScene loaded, int spp, long seed, ReferenceCache cache,
                           Renderings render, PrintWriter note) throws IOException {
+        World world = loaded.world();
         ViewPlane vp = world.viewPlane().withSamples(Math.max(1, spp / 2));
         world.setViewPlane(vp);
-        world.setCutoff(0);
+        LoadedScene whole = new LoadedScene(world, loaded.rayTree().withCutoff(0), loaded.encoding(), loaded.report());
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n";
@@ -123,8 +125,8 @@ final class ConvergeReference {
         note.printf("converge: rendering the reference: 2 x %d spp, seeds %d and %d, no cutoff%n", vp.numSamples(), seed, other);
         Film a = new Film(vp.hres(), vp.vres());
         Film b = new Film(vp.hres(), vp.vres());
-        double seconds = render.render(world, a, seed, "reference, half 1 of 2").seconds()
-                         + render.render(world, b, other, "reference, half 2 of 2").seconds();
+        double seconds = render.render(whole, a, seed, "reference, half 1 of 2").seconds()
+                         + render.render(whole, b, other, "reference, half 2 of 2").seconds();
         a = scaled(a, vp.exposure());
         b = scaled(b, vp.exposure());
         double noiseRmse = ErrorMetrics.compare(a, 1, b).rmse() / 2;
@@ -148,7 +150,7 @@ final class ConvergeReference {
     /** How the command renders: into a film, with a seed, a progress label, returning what it cost. */
     @FunctionalInterface
     interface Renderings {
-        RenderStats render(World world, Film film, long seed, String label);
+        RenderStats render(LoadedScene scene, Film film, long seed, String label);
     }
 
     /** The film times {@code exposure}, as a .pfm of it would hold it. */

@@ -3,7 +3,8 @@ package raytracer.core;
 /**
  * Which parts of the ray tree a worker traces: the report's term passes ({@link ShadingPass}:
  * which terms the first hit shows) and the adaptive cutoff of Hall and Greenberg (1983): the path
- * weight of the ray at each depth, recorded as the materials branch, against the world's cutoff.
+ * weight of the ray at each depth, recorded as the materials branch, against the render's cutoff
+ * ({@link RayTreeSettings}).
  * Materials ask it before they trace; no flag about either reaches the light loop. One per worker
  * ({@link WorkerScratch#policy}), since it records the weights as the recursion descends.
  */
@@ -25,10 +26,11 @@ public final class RayTreePolicy {
     private final double[] weightG;
     private final double[] weightB;
 
-    RayTreePolicy(World world, int levels) {
-        pass = world.pass();
-        cutoff = world.cutoff();
-        radianceCutoff = world.cutoff() / world.viewPlane().exposure();
+    /** For {@code levels} recursion depths, judging negligible light in the display units of {@code exposure}. */
+    RayTreePolicy(RayTreeSettings settings, double exposure, int levels) {
+        pass = settings.pass();
+        cutoff = settings.cutoff();
+        radianceCutoff = settings.cutoff() / exposure;
         weightR = new double[levels];
         weightG = new double[levels];
         weightB = new double[levels];

@@ -39,7 +39,13 @@ public final class WorkerScratch {
     /** Samples whose radiance came out NaN or infinite: dropped, counted, and expected to stay 0. */
     public long nonFiniteSamples;
 
+    /** Scratch for a render of {@code world} that traces every term of the whole tree. */
     public WorkerScratch(World world) {
+        this(world, RayTreeSettings.FULL_TREE);
+    }
+
+    /** Scratch for a render of {@code world} that traces as much of the ray tree as {@code settings} ask. */
+    public WorkerScratch(World world, RayTreeSettings settings) {
         int levels = world.viewPlane().maxDepth() + 2;
         shadeRecs = new ShadeRec[levels];
         rays = new Ray[levels];
@@ -65,7 +71,7 @@ public final class WorkerScratch {
         environments = new Background[levels];
         patternX = new double[levels][];
         patternY = new double[levels][];
-        policy = new RayTreePolicy(world, levels);
+        policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }
 
     /** Bounding-volume tests made by all rays of this worker so far. */

@@ -4,7 +4,8 @@
  * {@link raytracer.core.GeometricObject}, {@link raytracer.core.Material}, {@link raytracer.core.BRDF},
  * {@link raytracer.core.BTDF}, {@link raytracer.core.Light}, {@link raytracer.core.Tracer},
  * {@link raytracer.core.Camera} and {@link raytracer.core.Sampler}; and each worker's scratch
- * ({@link raytracer.core.WorkerScratch}) with its {@link raytracer.core.RayTreePolicy}. The families
+ * ({@link raytracer.core.WorkerScratch}) with its {@link raytracer.core.RayTreePolicy}, made from the
+render's {@link raytracer.core.RayTreeSettings}. The families
  * ({@code shapes}, {@code materials}, ...) implement these; the renderer sees only these.
  */
 package raytracer.core;

@@ -4,10 +4,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -21,28 +21,26 @@ import raytracer.math.SampleMapping;
 import raytracer.math.Vec3;
 
 /**
- * Renders a prepared {@link World} with a {@link ForkJoinPool}: the image is cut into square tiles,
+ * Renders a prepared {@link World} on the run's {@link Workers}: the image is cut into square tiles,
  * the tile list is split in halves until one tile remains per task, and each worker thread keeps one
  * {@link WorkerScratch}. Every pixel reseeds the worker's generator from (seed, x, y), so the pixels
  * do not depend on the thread count or the order in which tiles finish.
  */
 public final class Renderer {
     public static final int TILE_SIZE = 32;
-    /** The most threads a {@link ForkJoinPool} runs (its parallelism limit, 2^15 - 1). */
-    public static final int MAX_THREADS = 0x7fff;
 
     private final World world;
-    private final int threads;
+    private final RayTreeSettings rayTree;
+    private final Workers workers;
     private final long seed;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
 
-    public Renderer(World world, int threads, long seed) {
-        if (threads < 1 || threads > MAX_THREADS) {
-            throw new IllegalArgumentException("threads must be 1 to " + MAX_THREADS + ", got " + threads);
-        }
+    /** Renders {@code world}, tracing as much of each ray tree as {@code rayTree} asks, on {@code workers}. */
+    public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed) {
         this.world = world;
-        this.threads = threads;
+        this.rayTree = rayTree;
+        this.workers = workers;
         this.seed = seed;
     }
 
@@ -59,17 +57,12 @@ public final class Renderer {
         pixelsDone.set(0);
         Queue<WorkerScratch> scratches = new ConcurrentLinkedQueue<>();
         ThreadLocal<WorkerScratch> scratch = ThreadLocal.withInitial(() -> {
-            WorkerScratch s = new WorkerScratch(world);
+            WorkerScratch s = new WorkerScratch(world, rayTree);
             scratches.add(s);
             return s;
         });
         long start = System.nanoTime();
-        ForkJoinPool pool = new ForkJoinPool(threads);
-        try {
-            pool.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch));
-        } finally {
-            pool.shutdown();
-        }
+        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch));
         long wall = System.nanoTime() - start;
         long primary = 0;
         long secondary = 0;
@@ -83,7 +76,7 @@ public final class Renderer {
             shadow += s.shadowRays;
             nonFinite += s.nonFiniteSamples;
         }
-        return new RenderStats(vp.hres(), vp.vres(), vp.numSamples(), threads, wall,
+        return new RenderStats(vp.hres(), vp.vres(), vp.numSamples(), workers.threads(), wall,
                                primary, secondary, shadow, nonFinite, boxTests);
     }
 

@@ -1,6 +1,7 @@
 /**
- * Rendering an image: a ForkJoin pool over tiles, one {@link raytracer.core.WorkerScratch} per worker
- * thread, per-pixel seeded sampling (so the image is identical for any thread count), progress and
- * statistics. Sees only the {@code core} interfaces.
+ * Rendering an image: the run's one fork/join pool ({@link raytracer.render.Workers}, which also
+ * loads the scene and builds its BVHs), tiles split over it, one {@link raytracer.core.WorkerScratch}
+ * per worker thread, per-pixel seeded sampling (so the image is identical for any thread count),
+ * progress and statistics. Sees only the {@code core} interfaces.
  */
 package raytracer.render;

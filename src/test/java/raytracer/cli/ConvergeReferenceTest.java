@@ -10,8 +10,9 @@ import java.util.OptionalInt;
 import org.junit.jupiter.api.Test;
 import raytracer.core.World;
 import raytracer.image.ErrorMetrics;
+import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneLoader;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 
 /** A self-rendered reference measures its own noise truly: checked against the exact image of a closed-form scene. */
 class ConvergeReferenceTest {
@@ -19,11 +20,12 @@ class ConvergeReferenceTest {
     @Test
     void theHalvesDifferenceEstimatesTheReferencesTrueError() throws Exception {
         Path file = Path.of("scenes", "closed-form-disk.yaml");
-        World world = SceneLoader.load(file, OptionalInt.empty());
+        LoadedScene scene = SceneLoader.load(file, OptionalInt.empty());
+        World world = scene.world();
         world.setViewPlane(world.viewPlane().withResolution(24, 24));
         world.prepare();
-        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), world, 128, 5, null,
-            (w, film, seed, label) -> new Renderer(w, 2, seed).render(film), new PrintWriter(new StringWriter()));
+        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), scene, 128, 5, null,
+            (s, film, seed, label) -> Renders.render(s.world(), s.rayTree(), 2, seed, film), new PrintWriter(new StringWriter()));
         var exact = ConvergeReference.closedForm(file, 24, 24, new PrintWriter(new StringWriter()), true).get();
         double trueRmse = ErrorMetrics.compare(ref.film(), 1, exact.film()).rmse();
         // 576 pixels: the two estimates of one variance agree to about 10%

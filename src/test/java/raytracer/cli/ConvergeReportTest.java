@@ -44,13 +44,13 @@ class ConvergeReportTest {
             objects:
               - {type: plane, normal: [0, 1, 0]}
             """;
-        World jittered = SceneLoader.load("s", scene.replace("SAMPLER", "multi-jittered"));
+        World jittered = SceneLoader.load("s", scene.replace("SAMPLER", "multi-jittered")).world();
         jittered.prepare();
         assertEquals("4-16", ConvergeReport.lightSamples(jittered), "a square pattern takes 4 samples for 2");
-        World random = SceneLoader.load("s", scene.replace("SAMPLER", "random"));
+        World random = SceneLoader.load("s", scene.replace("SAMPLER", "random")).world();
         random.prepare();
         assertEquals("2-16", ConvergeReport.lightSamples(random));
-        World points = SceneLoader.load("s", "lights: [{type: point, position: [0, 2, 0]}]\nobjects: [{type: plane, normal: [0, 1, 0]}]");
+        World points = SceneLoader.load("s", "lights: [{type: point, position: [0, 2, 0]}]\nobjects: [{type: plane, normal: [0, 1, 0]}]").world();
         points.prepare();
         assertEquals("-", ConvergeReport.lightSamples(points));
     }

@@ -17,10 +17,11 @@ import raytracer.accel.Aggregation;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.image.Film;
+import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 
 /**
  * Every scene file in scenes/ (the report's figures, the benches, the default) loads without a
@@ -50,13 +51,14 @@ class SceneFilesTest {
             }
         }
         assertEquals(List.of(), missing, scene + " reads files that are not there; they belong in assets/");
-        World world = SceneLoader.load(scene);
-        assertEquals(List.of(), world.warnings(), scene + " loads with warnings");
+        LoadedScene loaded = SceneLoader.load(scene);
+        assertEquals(List.of(), loaded.report().warnings(), scene + " loads with warnings");
+        World world = loaded.world();
         world.setViewPlane(world.viewPlane().withResolution(16, 12).withSamples(1));
         world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));
         ViewPlane vp = world.viewPlane();
         Film film = new Film(vp.hres(), vp.vres());
-        RenderStats stats = new Renderer(world, 2, 1).render(film);
+        RenderStats stats = Renders.render(world, loaded.rayTree(), 2, 1, film);
         assertEquals(0, stats.nonFiniteSamples(), scene + ": non-finite samples");
         float first = film.get(0, 0, 1);
         boolean varies = false;

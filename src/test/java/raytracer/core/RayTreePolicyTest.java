@@ -17,10 +17,7 @@ import raytracer.math.Rgb;
 class RayTreePolicyTest {
 
     private static RayTreePolicy policy(double cutoff, double exposure, ShadingPass pass) {
-        World world = new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 4, exposure), null, null);
-        world.setCutoff(cutoff);
-        world.setPass(pass);
-        return new RayTreePolicy(world, 6);
+        return new RayTreePolicy(new RayTreeSettings(pass, cutoff), exposure, 6);
     }
 
     @Test

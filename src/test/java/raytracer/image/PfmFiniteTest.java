@@ -21,7 +21,7 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.samplers.Regular;
 import raytracer.shapes.Sphere;
 import raytracer.tracers.RayCast;
@@ -65,7 +65,7 @@ class PfmFiniteTest {
         world.setTracer(RayCast::new);
         world.prepare();
         Film film = new Film(8, 6);
-        RenderStats stats = new Renderer(world, 1, 1).render(film);
+        RenderStats stats = Renders.render(world, 1, 1, film);
         assertEquals(0, stats.nonFiniteSamples(), "each sample is a finite double");
         assertEquals(Float.POSITIVE_INFINITY, film.get(4, 3, 0), "the film's float overflows at the sphere's centre");
         float[] values = writeAndDecode(film, 1);

@@ -9,6 +9,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.cameras.Orthographic;
 import raytracer.core.Light;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadeRec;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
@@ -16,17 +17,17 @@ import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.materials.Matte;
 import raytracer.materials.Reflective;
-import raytracer.render.RenderStats;
-import raytracer.shapes.Rectangle;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.RenderStats;
+import raytracer.render.Renders;
 import raytracer.samplers.MultiJittered;
 import raytracer.shapes.Plane;
+import raytracer.shapes.Rectangle;
 import raytracer.tracers.AreaLighting;
 
 /**
@@ -48,7 +49,7 @@ class AreaLightTest {
         world.setTracer(AreaLighting::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
-        new Renderer(world, 2, 7).render(film);
+        Renders.render(world, 2, 7, film);
         return meanAndError(film);
     }
 
@@ -257,10 +258,9 @@ class AreaLightTest {
             world.addObject(floor);
             world.addLight(AreaLight.disk(new Point3D(0, -3 + height, 0), new Vector3D(0, -1, 0), radius, le, RGBColor.WHITE, 16));
             world.setTracer(AreaLighting::new);
-            world.setCutoff(cutoffs[k]);
             world.prepare();
             Film film = new Film(SIZE, SIZE);
-            RenderStats stats = new Renderer(world, 2, 7).render(film);
+            RenderStats stats = Renders.render(world, RayTreeSettings.FULL_TREE.withCutoff(cutoffs[k]), 2, 7, film);
             shadowRays[k] = stats.shadowRays();
             double[] estimate = meanAndError(film);
             double mean = estimate[0];

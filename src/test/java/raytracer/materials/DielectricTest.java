@@ -17,7 +17,7 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Box;
 import raytracer.shapes.Sphere;
 import raytracer.tracers.Whitted;
@@ -40,7 +40,7 @@ class DielectricTest {
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(size, size);
-        RenderStats stats = new Renderer(world, 1, 1).render(film);
+        RenderStats stats = Renders.render(world, 1, 1, film);
         assertEquals(0, stats.nonFiniteSamples());
         return film;
     }

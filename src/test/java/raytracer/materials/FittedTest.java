@@ -14,7 +14,7 @@ import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Plane;
 import raytracer.tracers.RayCast;
 
@@ -34,7 +34,7 @@ class FittedTest {
         world.setTracer(RayCast::new);
         world.prepare();
         Film film = new Film(1, 1);
-        new Renderer(world, 1, 1).render(film);
+        Renders.render(world, 1, 1, film);
         return film.get(0, 0, 0);
     }
 

@@ -13,7 +13,7 @@ import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.samplers.PureRandom;
 import raytracer.shapes.Plane;
 import raytracer.tracers.Whitted;
@@ -43,7 +43,7 @@ class GlossyReflectorTest {
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
-        new Renderer(world, 2, 7).render(film);
+        Renders.render(world, 2, 7, film);
         return film;
     }
 

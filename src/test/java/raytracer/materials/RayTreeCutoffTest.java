@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import raytracer.cameras.Pinhole;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -16,7 +17,7 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Box;
 import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
@@ -37,7 +38,7 @@ class RayTreeCutoffTest {
     };
     private static final int SIZE = 64;
 
-    private static World scene(double cutoff) {
+    private static World scene() {
         World world = new World(new ViewPlane(SIZE, SIZE, 1, CENTRE, 12, 1),
             new Pinhole(new Point3D(0, 1.6, 5), new Point3D(0, 0.6, 0), Vector3D.UP, 40), new Ambient(0.05, RGBColor.WHITE));
         world.setBackground(new RGBColor(0.3, 0.4, 0.6));
@@ -57,14 +58,13 @@ class RayTreeCutoffTest {
         world.addLight(new PointLight(12, RGBColor.WHITE, new Point3D(2, 4, 3)));
         world.addLight(new PointLight(4, new RGBColor(1, 0.9, 0.8), new Point3D(-3, 3, 1)));
         world.setTracer(Whitted::new);
-        world.setCutoff(cutoff);
         world.prepare();
         return world;
     }
 
     private static Film render(double cutoff, RenderStats[] stats) {
         Film film = new Film(SIZE, SIZE);
-        stats[0] = new Renderer(scene(cutoff), 1, 1).render(film);
+        stats[0] = Renders.render(scene(), RayTreeSettings.FULL_TREE.withCutoff(cutoff), 1, 1, film);
         assertEquals(0, stats[0].nonFiniteSamples());
         return film;
     }
@@ -111,7 +111,7 @@ class RayTreeCutoffTest {
         world.addLight(new PointLight(5, RGBColor.WHITE, new Point3D(0, 5, 0)));
         world.setTracer(Whitted::new);
         world.prepare();
-        RenderStats stats = new Renderer(world, 1, 1).render(new Film(8, 8));
+        RenderStats stats = Renders.render(world, 1, 1, new Film(8, 8));
         assertTrue(stats.secondaryRays() > 0);
         assertEquals(0, stats.shadowRays());
     }

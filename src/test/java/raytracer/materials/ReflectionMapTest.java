@@ -11,7 +11,7 @@ import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Sphere;
 import raytracer.textures.EnvironmentMap;
 import raytracer.tracers.Whitted;
@@ -41,7 +41,7 @@ class ReflectionMapTest {
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(30, 10);
-        new Renderer(world, 1, 1).render(film);
+        Renders.render(world, 1, 1, film);
         // centre of the left sphere: its reflection escapes into its own (red) map
         assertEquals(1, film.get(5, 5, 0), 1e-6);
         assertEquals(0, film.get(5, 5, 2), 1e-6);

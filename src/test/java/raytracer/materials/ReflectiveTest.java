@@ -13,7 +13,7 @@ import raytracer.math.Fresnel;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Sphere;
 import raytracer.tracers.Whitted;
 
@@ -33,7 +33,7 @@ class ReflectiveTest {
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
-        new Renderer(world, 1, 1).render(film);
+        Renders.render(world, 1, 1, film);
         return film;
     }
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import raytracer.cameras.Orthographic;
 import raytracer.core.Material;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -15,7 +16,7 @@ import raytracer.lights.PointLight;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.shapes.Sphere;
 import raytracer.tracers.Whitted;
 
@@ -33,11 +34,10 @@ class ShadingPassTest {
         sphere.setMaterial(material);
         world.addObject(sphere);
         world.addLight(new PointLight(30, RGBColor.WHITE, new Point3D(2, 3, 5)));
-        world.setPass(pass);
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(SIZE, SIZE);
-        new Renderer(world, 1, 1).render(film);
+        Renders.render(world, RayTreeSettings.FULL_TREE.withPass(pass), 1, 1, film);
         return film;
     }
 

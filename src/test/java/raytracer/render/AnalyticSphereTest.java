@@ -42,7 +42,7 @@ class AnalyticSphereTest {
         world.setTracer(RayCast::new);
         world.prepare();
         Film film = new Film(W, H);
-        new Renderer(world, 2, 1).render(film);
+        Renders.render(world, 2, 1, film);
 
         int lit = 0;
         double worst = 0;

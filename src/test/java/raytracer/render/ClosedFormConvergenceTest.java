@@ -28,7 +28,7 @@ class ClosedFormConvergenceTest {
     private static Film render(World world, int spp, long seed) {
         world.setViewPlane(world.viewPlane().withResolution(SIZE, SIZE).withSamples(spp));
         Film film = new Film(SIZE, SIZE);
-        new Renderer(world, 2, seed).render(film);
+        Renders.render(world, 2, seed, film);
         return film;
     }
 
@@ -36,7 +36,7 @@ class ClosedFormConvergenceTest {
     @ValueSource(strings = {"closed-form-rectangle", "closed-form-disk"})
     void theRendererConvergesToTheExactImage(String name) throws Exception {
         Path file = Path.of("scenes", name + ".yaml");
-        World world = SceneLoader.load(file);
+        World world = SceneLoader.load(file).world();
         world.prepare();
         LitPlane exact = ClosedFormReader.read(file).withResolution(SIZE, SIZE);
         Film reference = exact.render(8);

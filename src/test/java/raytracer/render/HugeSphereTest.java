@@ -68,7 +68,7 @@ class HugeSphereTest {
         world.setTracer(RayCast::new);
         world.prepare();
         Film film = new Film(W, H);
-        assertEquals(0, new Renderer(world, 1, 1).render(film).nonFiniteSamples());
+        assertEquals(0, Renders.render(world, 1, 1, film).nonFiniteSamples());
         return film;
     }
 }

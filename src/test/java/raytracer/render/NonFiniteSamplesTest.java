@@ -17,7 +17,7 @@ class NonFiniteSamplesTest {
     void nonFiniteSamplesAreCountedAndDropped() {
         for (int threads : new int[] {1, 3}) {
             Film film = new Film(NonFiniteScene.W, NonFiniteScene.H);
-            RenderStats stats = new Renderer(NonFiniteScene.world(), threads, 1).render(film);
+            RenderStats stats = Renders.render(NonFiniteScene.world(), threads, 1, film);
             assertEquals(NonFiniteScene.NON_FINITE_SAMPLES, stats.nonFiniteSamples(), threads + " threads");
             for (int y = 0; y < NonFiniteScene.H; y++) {
                 for (int x = 0; x < NonFiniteScene.W; x++) {

@@ -75,7 +75,7 @@ class NumericalStressTest {
 
     private static Film render(World world) {
         Film film = new Film(StressScenes.W, StressScenes.H);
-        RenderStats stats = new Renderer(world, 2, SEED).render(film);
+        RenderStats stats = Renders.render(world, 2, SEED, film);
         assertEquals(0, stats.nonFiniteSamples(), "non-finite samples dropped");
         for (int y = 0; y < film.height(); y++) {
             for (int x = 0; x < film.width(); x++) {

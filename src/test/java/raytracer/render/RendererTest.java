@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 import raytracer.cameras.Pinhole;
 import raytracer.core.GeometricObject;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.image.Film;
@@ -22,14 +23,31 @@ import raytracer.shapes.Instance;
 import raytracer.shapes.Sphere;
 import raytracer.tracers.Whitted;
 
-/** The renderer's limits: thread counts, and the deepest recursion a worker can hold. */
+/** The renderer's limits and its pool: the deepest recursion a worker can hold, renders repeated on one pool. */
 class RendererTest {
     @Test
-    void threadCountsOutsideWhatAForkJoinPoolRunsAreRefused() {
-        World world = insideAMirror(1);
-        assertThrows(IllegalArgumentException.class, () -> new Renderer(world, 0, 1));
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Renderer(world, 32768, 1));
-        assertEquals("threads must be 1 to 32767, got 32768", e.getMessage());
+    void rendersRepeatedOnOnePoolGiveTheSameImage() {
+        // --repeat renders on the run's one pool: a renderer that shut the pool down after its
+        // render would fail the second time
+        World world = insideAMirror(3);
+        Film[] films = {new Film(4, 4), new Film(4, 4)};
+        RenderStats[] stats = new RenderStats[2];
+        try (Workers workers = new Workers(2)) {
+            for (int i = 0; i < 2; i++) {
+                stats[i] = new Renderer(world, RayTreeSettings.FULL_TREE, workers, 1).render(films[i]);
+            }
+        }
+        for (int i = 0; i < 2; i++) {
+            assertEquals(2, stats[i].threads());
+            assertEquals(16L * 3, stats[i].secondaryRays(), "each render counts its own rays, render " + i);
+        }
+        for (int y = 0; y < 4; y++) {
+            for (int x = 0; x < 4; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(films[0].get(x, y, c), films[1].get(x, y, c), 0, "pixel " + x + ", " + y);
+                }
+            }
+        }
     }
 
     @Test
@@ -38,7 +56,7 @@ class RendererTest {
         // recurses to the full depth (max-depth 100000 ran out of memory, 3000 out of stack)
         World world = insideAMirror(ViewPlane.MAX_DEPTH);
         Film film = new Film(4, 4);
-        RenderStats stats = new Renderer(world, 2, 1).render(film);
+        RenderStats stats = Renders.render(world, 2, 1, film);
         assertEquals(16L * ViewPlane.MAX_DEPTH, stats.secondaryRays(), "every level was traced");
         assertTrue(film.get(1, 1, 0) > 0);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

@@ -82,7 +82,7 @@ class ScaleRobustnessTest {
         world.setTracer(Whitted::new);
         world.prepare();
         Film film = new Film(W, H);
-        RenderStats stats = new Renderer(world, 2, 1).render(film);
+        RenderStats stats = Renders.render(world, 2, 1, film);
         assertEquals(0, stats.nonFiniteSamples());
         return film;
     }

@@ -10,6 +10,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import raytracer.brdf.FittedPreset;
 import raytracer.cameras.Pinhole;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -33,7 +34,7 @@ import raytracer.math.Ray;
 import raytracer.math.Rgb;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
-import raytracer.render.Renderer;
+import raytracer.render.Renders;
 import raytracer.samplers.MultiJittered;
 import raytracer.shapes.Box;
 import raytracer.shapes.Plane;
@@ -48,7 +49,7 @@ import raytracer.shapes.Sphere;
 class AreaLightingTest {
     private static final int SIZE = 40;
 
-    private static World scene(Function<World, Tracer> tracer, double cutoff, ShadingPass pass) {
+    private static World scene(Function<World, Tracer> tracer) {
         World world = new World(new ViewPlane(SIZE, SIZE, 4, new MultiJittered(), 6, 1),
             new Pinhole(new Point3D(0, 1.6, 5), new Point3D(0, 0.6, 0), Vector3D.UP, 50), new Ambient(0.1, RGBColor.WHITE));
         world.setBackground(new RGBColor(0.3, 0.4, 0.6));
@@ -76,15 +77,13 @@ class AreaLightingTest {
         world.addLight(new PointLight(12, RGBColor.WHITE, new Point3D(2, 4, 3)));
         world.addLight(new Directional(1, new RGBColor(1, 0.9, 0.8), new Vector3D(-1, 2, 1)));
         world.setTracer(tracer);
-        world.setCutoff(cutoff);
-        world.setPass(pass);
         world.prepare();
         return world;
     }
 
-    private static Film render(World world, RenderStats[] stats) {
+    private static Film render(World world, double cutoff, ShadingPass pass, RenderStats[] stats) {
         Film film = new Film(SIZE, SIZE);
-        stats[0] = new Renderer(world, 2, 5).render(film);
+        stats[0] = Renders.render(world, new RayTreeSettings(pass, cutoff), 2, 5, film);
         return film;
     }
 
@@ -93,8 +92,8 @@ class AreaLightingTest {
     void withoutAreaLightsAreaLightingIsWhittedBitForBit(double cutoff, ShadingPass pass) {
         RenderStats[] whittedStats = new RenderStats[1];
         RenderStats[] areaStats = new RenderStats[1];
-        Film whitted = render(scene(Whitted::new, cutoff, pass), whittedStats);
-        Film area = render(scene(AreaLighting::new, cutoff, pass), areaStats);
+        Film whitted = render(scene(Whitted::new), cutoff, pass, whittedStats);
+        Film area = render(scene(AreaLighting::new), cutoff, pass, areaStats);
         double sum = 0;
         for (int y = 0; y < SIZE; y++) {
             for (int x = 0; x < SIZE; x++) {

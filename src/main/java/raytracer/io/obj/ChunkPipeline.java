@@ -1,21 +1,22 @@
 package raytracer.io.obj;
 
 import java.io.IOException;
-import java.io.InterruptedIOException;
 import java.util.ArrayDeque;
 import java.util.Deque;
-import java.util.Map;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.RecursiveTask;
 
 /**
- * Reading and parsing side by side: the calling thread inflates and cuts the text into chunks, a
- * pool of one worker per processor parses them ({@link PlainChunk}), and the results are handed
- * back on the calling thread in file order. On the dragon (2 cores) this took the parse from
- * 0.77-0.90 s to 0.64-0.78 s; most of the rest is the JIT and the collector, which already kept
- * the second core half busy during a serial read.
+ * Reading and parsing side by side: the calling thread inflates and cuts the text into chunks, the
+ * chunks are parsed as fork/join tasks ({@link PlainChunk}), and the results are handed back on the
+ * calling thread in file order. The tasks run in the pool the caller runs in (the command line's
+ * one pool, sized by --threads), or in the common pool when the caller is in none. On the dragon
+ * (2 cores) parsing beside the reading took the parse from 0.77-0.90 s to 0.64-0.78 s; most of the
+ * rest is the JIT and the collector, which already kept the second core half busy during a serial
+ * read. Run in the command line's pool of 2 instead of a pool of its own beside the reading
+ * thread, the parse took 0.885 times as long (median of 36 interleaved pairs on a shared host);
+ * having the reading thread parse the newest chunks while it waits for the oldest did not help.
  */
 final class ChunkPipeline {
     /** Takes a chunk's text and its plain parse, in file order. */
@@ -39,36 +40,36 @@ final class ChunkPipeline {
             }
             return;
         }
-        int workers = Runtime.getRuntime().availableProcessors();
-        ExecutorService pool = Executors.newFixedThreadPool(workers, task -> {
-            Thread t = new Thread(task, "obj-parse");
-            t.setDaemon(true);
-            return t;
-        });
-        Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight = new ArrayDeque<>();
+        // a few chunks ahead keep the workers busy; more would only hold text in memory
+        int ahead = 2 * parallelism() + 2;
+        Deque<Parse> inFlight = new ArrayDeque<>();
         try {
-            inFlight.add(Map.entry(first, pool.submit(() -> PlainChunk.parse(first.text()))));
-            inFlight.add(Map.entry(second, pool.submit(() -> PlainChunk.parse(second.text()))));
+            inFlight.add(Parse.fork(first));
+            inFlight.add(Parse.fork(second));
             Decoding.Text text;
             while ((text = nextChunk(chunks, inFlight, merge)) != null) {
-                // a few chunks ahead keep the workers busy; more would only hold text in memory
-                while (inFlight.size() > 2 * workers + 2) {
+                while (inFlight.size() > ahead) {
                     mergeOldest(inFlight, merge);
                 }
-                Decoding.Text chunk = text;
-                inFlight.add(Map.entry(chunk, pool.submit(() -> PlainChunk.parse(chunk.text()))));
+                inFlight.add(Parse.fork(text));
             }
             while (!inFlight.isEmpty()) {
                 mergeOldest(inFlight, merge);
             }
         } finally {
-            pool.shutdownNow();
+            // after an error, the chunks not yet parsed need not be
+            inFlight.forEach(parse -> parse.cancel(false));
         }
     }
 
+    /** Workers of the pool the chunks are parsed in. */
+    private static int parallelism() {
+        return ForkJoinTask.inForkJoinPool() ? ForkJoinTask.getPool().getParallelism()
+                                             : ForkJoinPool.getCommonPoolParallelism();
+    }
+
     /** The next chunk; when the stream fails, the chunks read before it come first, with their errors. */
-    private static Decoding.Text nextChunk(LineChunks chunks, Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight,
-                                    Merge merge)
+    private static Decoding.Text nextChunk(LineChunks chunks, Deque<Parse> inFlight, Merge merge)
             throws IOException, ObjException {
         try {
             return chunks.next();
@@ -80,16 +81,29 @@ final class ChunkPipeline {
         }
     }
 
-    private static void mergeOldest(Deque<Map.Entry<Decoding.Text, Future<PlainChunk>>> inFlight, Merge merge)
-            throws IOException, ObjException {
-        Map.Entry<Decoding.Text, Future<PlainChunk>> oldest = inFlight.remove();
-        try {
-            merge.append(oldest.getKey(), oldest.getValue().get());
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new InterruptedIOException("interrupted while parsing");
-        } catch (ExecutionException e) {
-            throw new IllegalStateException(e.getCause());
+    private static void mergeOldest(Deque<Parse> inFlight, Merge merge) throws ObjException {
+        Parse oldest = inFlight.remove();
+        merge.append(oldest.text, oldest.join());
+    }
+
+    /** The plain parse of one chunk, as a task of the caller's pool. */
+    private static final class Parse extends RecursiveTask<PlainChunk> {
+        private static final long serialVersionUID = 1L;
+        private final transient Decoding.Text text;
+
+        private Parse(Decoding.Text text) {
+            this.text = text;
+        }
+
+        static Parse fork(Decoding.Text text) {
+            Parse parse = new Parse(text);
+            parse.fork();
+            return parse;
+        }
+
+        @Override
+        protected PlainChunk compute() {
+            return PlainChunk.parse(text.text());
         }
     }
 }

@@ -10,7 +10,6 @@ import raytracer.accel.SahBuilder;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.Texture;
-import raytracer.core.World;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
@@ -38,7 +37,7 @@ final class MeshReader {
     private MeshReader() {
     }
 
-    static GeometricObject read(YamlObject o, Material override, World world, TextureReader textures) throws SceneException {
+    static GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures) throws SceneException {
         Path file = o.source().resolve(o.requiredString("file"));
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
@@ -56,7 +55,7 @@ final class MeshReader {
         List<Material> materials = new ArrayList<>();
         if (override == null) {
             for (ObjMaterial m : model.materials()) {
-                materials.add(fromMtl(m, textures, world));
+                materials.add(fromMtl(m, textures, report));
             }
         }
         // the build's time includes the triangles' boxes and the mesh's leaf-ordered vertex copy
@@ -66,12 +65,12 @@ final class MeshReader {
             : new SahBuilder(SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(model.mesh()));
         MeshBVH mesh = new MeshBVH(model.mesh(), bvh, materials);
         long built = System.nanoTime();
-        world.recordTiming("parse " + file.getFileName(), parsed - start);
-        world.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)",
+        report.recordTiming("parse " + file.getFileName(), parsed - start);
+        report.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)",
                            built - buildStart);
-        world.addStatistic(statistic(file, model));
-        model.warnings().forEach(world::addWarning);
-        normalMaps(o, model, mesh, textures, world);
+        report.addStatistic(statistic(file, model));
+        model.warnings().forEach(report::addWarning);
+        normalMaps(o, model, mesh, textures, report);
         mesh.setMaterial(override != null ? override
                          : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
@@ -93,7 +92,7 @@ final class MeshReader {
      * {@code none}; without the key, each MTL material's norm / map_Bump read as a tangent-space
      * normal map (OpenGL convention).
      */
-    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, World world)
+    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, LoadReport report)
             throws SceneException {
         if (o.has("normal-map") && o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
             String value = o.requiredString("normal-map");
@@ -121,7 +120,7 @@ final class MeshReader {
                 try {
                     mesh.setNormalMap(id, new ImageTexture(textures.linearImage(m.mapBump(), null)), true);
                 } catch (SceneException e) {
-                    world.addWarning(e.getMessage() + "; material '" + m.name() + "' has no normal map");
+                    report.addWarning(e.getMessage() + "; material '" + m.name() + "' has no normal map");
                 }
             }
         }
@@ -133,7 +132,7 @@ final class MeshReader {
      * not blended; otherwise Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong
      * lobe. An unreadable map_Kd is a warning.
      */
-    static Material fromMtl(ObjMaterial m, TextureReader textures, World world) {
+    static Material fromMtl(ObjMaterial m, TextureReader textures, LoadReport report) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
         RGBColor ke = new RGBColor(m.ke()[0], m.ke()[1], m.ke()[2]);
@@ -143,7 +142,7 @@ final class MeshReader {
         if (m.dissolve() < 1) {
             // exporters write "Ni 1" whatever the material, and glass of index 1 would be invisible
             double ior = m.ior() > 1 ? m.ior() : MaterialReader.IOR;
-            world.addWarning("material '" + m.name() + "': d " + m.dissolve() + " is read as clear glass of index " + ior
+            report.addWarning("material '" + m.name() + "': d " + m.dissolve() + " is read as clear glass of index " + ior
                              + " (partial transparency is not blended)");
             boolean lobe = ks.max() > 0 && m.ns() > 0;
             return new Dielectric(ior, RGBColor.BLACK, lobe ? ks.max() : 0, lobe ? m.ns() : MaterialReader.DIELECTRIC_EXPONENT);
@@ -153,7 +152,7 @@ final class MeshReader {
             try {
                 texture = new ImageTexture(textures.image(m.mapKd(), null));
             } catch (SceneException e) {
-                world.addWarning(e.getMessage() + "; material '" + m.name() + "' uses its Kd colour instead");
+                report.addWarning(e.getMessage() + "; material '" + m.name() + "' uses its Kd colour instead");
             }
         }
         if (ks.max() > 0 && m.ns() > 0) {

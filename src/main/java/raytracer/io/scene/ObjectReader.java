@@ -8,7 +8,6 @@ import java.util.TreeSet;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
-import raytracer.core.World;
 import raytracer.math.Matrix4;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
@@ -34,7 +33,7 @@ final class ObjectReader {
     private ObjectReader() {
     }
 
-    static GeometricObject read(Source source, Node node, Map<String, Material> materials, World world,
+    static GeometricObject read(Source source, Node node, Map<String, Material> materials, LoadReport report,
                                 TextureReader textures) throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
@@ -47,7 +46,7 @@ final class ObjectReader {
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
         if (kind.equals("mesh")) {
-            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, world, textures);
+            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, report, textures);
         } else {
             try {
                 shape = shape(kind, o);

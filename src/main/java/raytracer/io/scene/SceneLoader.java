@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.function.Function;
@@ -23,10 +24,12 @@ import org.yaml.snakeyaml.resolver.Resolver;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.image.DisplayEncoding;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
 import raytracer.samplers.Samplers;
@@ -35,8 +38,9 @@ import raytracer.tracers.RayCast;
 import raytracer.tracers.Whitted;
 
 /**
- * Reads a scene file into a {@link World} (not yet prepared: the caller may still override the
- * view plane). Every problem becomes a {@link SceneException} naming file, line and column.
+ * Reads a scene file into a {@link LoadedScene}: the {@link World}, the render settings the file
+ * gives and the report of the loading. Every problem becomes a {@link SceneException} naming file,
+ * line and column.
  */
 public final class SceneLoader {
     static final Set<String> SECTIONS =
@@ -55,7 +59,7 @@ public final class SceneLoader {
     private SceneLoader() {
     }
 
-    public static World load(Path file) throws SceneException {
+    public static LoadedScene load(Path file) throws SceneException {
         return load(file, OptionalInt.empty());
     }
 
@@ -63,7 +67,7 @@ public final class SceneLoader {
      * As {@link #load(Path)}; with {@code areaLightSamples} every area light takes that many samples
      * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
      */
-    public static World load(Path file, OptionalInt areaLightSamples) throws SceneException {
+    public static LoadedScene load(Path file, OptionalInt areaLightSamples) throws SceneException {
         return load(source(file), text(file), areaLightSamples);
     }
 
@@ -88,18 +92,19 @@ public final class SceneLoader {
     }
 
     /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
-    public static World load(String sourceName, String text) throws SceneException {
+    public static LoadedScene load(String sourceName, String text) throws SceneException {
         return load(new Source(sourceName, null), text, OptionalInt.empty());
     }
 
-    static World load(Source source, String text, OptionalInt areaLightSamples) throws SceneException {
+    static LoadedScene load(Source source, String text, OptionalInt areaLightSamples) throws SceneException {
         Node root = root(source, text);
         YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
         ViewPlane vp = readImage(source, scene);
         Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
         World world = new World(vp, camera, readAmbient(source, scene));
-        world.setCutoff(readCutoff(source, scene));
-        world.setLinearDisplay(readLinearDisplay(source, scene));
+        RayTreeSettings rayTree = RayTreeSettings.FULL_TREE.withCutoff(readCutoff(source, scene));
+        DisplayEncoding encoding = readEncoding(source, scene);
+        LoadReport report = new LoadReport();
         TextureReader textures = new TextureReader(source);
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
@@ -107,7 +112,7 @@ public final class SceneLoader {
         }
         if (scene.has("pass")) {
             try {
-                world.setPass(ShadingPass.parse(scene.requiredString("pass")));
+                rayTree = rayTree.withPass(ShadingPass.parse(scene.requiredString("pass")));
             } catch (IllegalArgumentException e) {
                 throw source.error(scene.raw("pass"), e.getMessage());
             }
@@ -125,12 +130,12 @@ public final class SceneLoader {
         }
         List<Node> objects = scene.list("objects");
         if (objects.isEmpty()) {
-            world.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
+            report.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
         }
         for (Node object : objects) {
-            world.addObject(ObjectReader.read(source, object, materials, world, textures));
+            world.addObject(ObjectReader.read(source, object, materials, report, textures));
         }
-        return world;
+        return new LoadedScene(world, rayTree, encoding, report);
     }
 
     /** The YAML node tree of a scene's text; an empty text is an error. */
@@ -222,17 +227,17 @@ public final class SceneLoader {
         return cutoff;
     }
 
-    private static boolean readLinearDisplay(Source source, YamlObject scene) throws SceneException {
+    private static DisplayEncoding readEncoding(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("image")) {
-            return false;
+            return DisplayEncoding.SRGB;
         }
         YamlObject image = new YamlObject(source, scene.raw("image"), "image", IMAGE_KEYS);
         String encoding = image.string("encoding", "srgb");
-        return switch (encoding) {
-            case "srgb" -> false;
-            case "linear" -> true;
-            default -> throw source.error(image.raw("encoding"), "unknown encoding '" + encoding + "'; allowed: linear, srgb");
-        };
+        Optional<DisplayEncoding> named = DisplayEncoding.named(encoding);
+        if (named.isEmpty()) {
+            throw source.error(image.raw("encoding"), "unknown encoding '" + encoding + "'; allowed: " + DisplayEncoding.NAMES);
+        }
+        return named.get();
     }
 
     private static Light readAmbient(Source source, YamlObject scene) throws SceneException {

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -13,6 +14,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.ForkJoinPool;
 import java.util.zip.GZIPOutputStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -74,6 +76,33 @@ class ChunkPipelineTest {
         List<String> strip = strip();
         for (String newline : new String[] {"\n", "\r\n", "\r"}) {
             assertStrip(ObjLoader.load(write("strip.obj", strip, newline), false).mesh());
+        }
+    }
+
+    @Test
+    void chunksAreParsedInThePoolOfTheCaller() throws Exception {
+        // run on the one thread of a pool of one, the pipeline leaves the chunks it has not merged
+        // yet in that pool's queue; parsed anywhere else, the queue would stay empty
+        Path file = write("strip.obj", strip(), "\n");
+        ForkJoinPool one = new ForkJoinPool(1);
+        try {
+            List<Long> queued = new ArrayList<>();
+            List<Thread> mergers = new ArrayList<>();
+            Thread caller = one.submit(() -> {
+                try (InputStream in = Files.newInputStream(file)) {
+                    ChunkPipeline.run(new LineChunks(in), (text, chunk) -> {
+                        queued.add(one.getQueuedTaskCount());
+                        mergers.add(Thread.currentThread());
+                    });
+                }
+                return Thread.currentThread();
+            }).get();
+            assertTrue(queued.size() >= 5, "chunks: " + queued.size());
+            assertTrue(queued.stream().anyMatch(n -> n > 0), "parses waiting in the pool at each merge: " + queued);
+            assertTrue(mergers.stream().allMatch(t -> t == caller), "merged on the caller's thread");
+            assertEquals(1, one.getPoolSize(), "no thread was added to the pool");
+        } finally {
+            one.shutdown();
         }
     }
 

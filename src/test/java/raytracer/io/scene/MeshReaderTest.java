@@ -53,10 +53,11 @@ class MeshReaderTest {
         Files.writeString(dir.resolve("m.obj"), obj);
         List<ObjMaterial> mtl = ObjLoader.load(dir.resolve("m.obj"), false).materials();
         World world = world();
+        LoadReport report = new LoadReport();
         TextureReader textures = new TextureReader(new Source(dir.resolve("s.yaml").toString(), dir));
         Material[] m = new Material[mtl.size()];
         for (int i = 0; i < m.length; i++) {
-            m[i] = MeshReader.fromMtl(mtl.get(i), textures, world);
+            m[i] = MeshReader.fromMtl(mtl.get(i), textures, report);
         }
         assertEquals(8, m.length, mtl.toString());
         assertInstanceOf(Matte.class, m[0]);
@@ -78,9 +79,9 @@ class MeshReaderTest {
         sr.frontFace = false;
         m[4].shade(sr, out);
         assertEquals(0, out.r + out.g + out.b, 0, "an emitter is dark from behind");
-        assertEquals(2, world.warnings().size(), "each glass reading is announced: " + world.warnings());
-        assertTrue(world.warnings().get(0).contains("'window'") && world.warnings().get(0).contains("glass of index 1.5"),
-                   world.warnings().get(0));
+        assertEquals(2, report.warnings().size(), "each glass reading is announced: " + report.warnings());
+        assertTrue(report.warnings().get(0).contains("'window'") && report.warnings().get(0).contains("glass of index 1.5"),
+                   report.warnings().get(0));
     }
 
     @Test
@@ -101,7 +102,7 @@ class MeshReaderTest {
                 + "\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
             Files.writeString(dir.resolve("s.yaml"), "ambient: {radiance: 0}\n"
                 + "lights: [{type: point, position: [0.1, 0.2, 1], intensity: 1}]\nobjects:\n  - {type: mesh, file: quad.obj}\n");
-            World world = SceneLoader.load(dir.resolve("s.yaml"));
+            World world = SceneLoader.load(dir.resolve("s.yaml")).world();
             world.prepare();
             ShadeRec sr = new WorkerScratch(world).shadeRec(0);
             assertTrue(world.hit(new Ray().set(0.1, 0.2, 1, 0, 0, -1), sr));
@@ -157,7 +158,7 @@ class MeshReaderTest {
     /** The shading normal where a ray from +z meets the quad of {@code quad.obj} under these keys. */
     private static Vec3 normalAtCentre(Path dir, String keys) throws Exception {
         Files.writeString(dir.resolve("s.yaml"), "objects:\n  - {type: mesh, file: quad.obj, " + keys + "}\n");
-        World world = SceneLoader.load(dir.resolve("s.yaml"));
+        World world = SceneLoader.load(dir.resolve("s.yaml")).world();
         world.prepare();
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         assertTrue(world.hit(new Ray().set(0.1, 0.2, 3, 0, 0, -1), sr));

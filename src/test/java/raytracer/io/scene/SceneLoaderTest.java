@@ -9,13 +9,17 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import raytracer.brdf.FittedPreset;
+import raytracer.core.RayTreeSettings;
+import raytracer.core.ShadingPass;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
+import raytracer.image.DisplayEncoding;
 import raytracer.math.Ray;
 import raytracer.math.Rgb;
 import raytracer.shapes.Instance;
@@ -53,6 +57,18 @@ class SceneLoaderTest {
         return out;
     }
 
+    @Test
+    void theFileGivesTheRayTreeSettingsAndTheEncodingBesideTheWorld() throws SceneException {
+        LoadedScene plain = SceneLoader.load("s.yaml", BASE);
+        assertEquals(RayTreeSettings.FULL_TREE, plain.rayTree(), "no pass, no cutoff: the whole tree");
+        assertEquals(DisplayEncoding.SRGB, plain.encoding());
+        LoadedScene set = SceneLoader.load("s.yaml", "pass: magenta-reflection\n"
+                                           + BASE.replace("image: {", "image: {cutoff: 0.02, encoding: linear, "));
+        assertEquals(new RayTreeSettings(ShadingPass.MAGENTA_REFLECTION, 0.02), set.rayTree());
+        assertEquals(DisplayEncoding.LINEAR, set.encoding());
+        assertEquals(2, set.world().viewPlane().exposure(), "the rest of image: still reaches the view plane");
+    }
+
     private static void assertRgb(double r, double g, double b, Rgb actual, String what) {
         assertEquals(r, actual.r, 1e-9 * Math.max(1, r), what + ", red");
         assertEquals(g, actual.g, 1e-9 * Math.max(1, g), what + ", green");
@@ -62,7 +78,7 @@ class SceneLoaderTest {
     @Test
     void validSceneLoadsWithItsSettings() throws SceneException {
         World world = SceneLoader.load("s.yaml", BASE + "  - {type: plane, normal: [0, 1, 0]}\n"
-            + "  - {type: box, min: [0, 0, 0], max: [1, 1, 1], transform: [{rotate-y: 30}, {translate: [1, 0, 0]}]}\n");
+            + "  - {type: box, min: [0, 0, 0], max: [1, 1, 1], transform: [{rotate-y: 30}, {translate: [1, 0, 0]}]}\n").world();
         assertEquals(32, world.viewPlane().hres());
         assertEquals(16, world.viewPlane().vres());
         assertEquals(4, world.viewPlane().numSamples(), "jittered rounds 3 up to 4");
@@ -76,7 +92,7 @@ class SceneLoaderTest {
 
     @Test
     void defaultsApplyToAMinimalScene() throws SceneException {
-        World world = SceneLoader.load("min.yaml", "tracer: ray-cast\nobjects:\n  - {type: sphere, center: [0, 0, 0]}\n");
+        World world = SceneLoader.load("min.yaml", "tracer: ray-cast\nobjects:\n  - {type: sphere, center: [0, 0, 0]}\n").world();
         assertEquals(640, world.viewPlane().hres());
         assertEquals(360, world.viewPlane().vres());
         assertEquals(4, world.viewPlane().numSamples());
@@ -87,12 +103,12 @@ class SceneLoaderTest {
     /** The tracer follows the lights unless the scene names one; whitted and ray-cast cannot take area lights. */
     @Test
     void scenesWithAreaLightsGetTheAreaLightingTracer() throws SceneException {
-        assertTrue(SceneLoader.load("s.yaml", BASE).tracer() instanceof raytracer.tracers.Whitted);
+        assertTrue(SceneLoader.load("s.yaml", BASE).world().tracer() instanceof raytracer.tracers.Whitted);
         String area = BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}",
                                    "{type: disk, center: [0, 5, 0], normal: [0, -1, 0]}");
-        assertTrue(SceneLoader.load("s.yaml", area).tracer() instanceof raytracer.tracers.AreaLighting);
-        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + area).tracer() instanceof raytracer.tracers.AreaLighting);
-        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + BASE).tracer() instanceof raytracer.tracers.AreaLighting,
+        assertTrue(SceneLoader.load("s.yaml", area).world().tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + area).world().tracer() instanceof raytracer.tracers.AreaLighting);
+        assertTrue(SceneLoader.load("s.yaml", "tracer: area-lighting\n" + BASE).world().tracer() instanceof raytracer.tracers.AreaLighting,
                    "point lights alone may be sampled too");
         assertMessage(error("tracer: whitted\n" + area), "s.yaml:1:9:", "'whitted' cannot sample", "area-lighting");
         assertMessage(error("tracer: ray-cast\n" + area), "s.yaml:1:9:", "'ray-cast' cannot sample", "max-depth: 0");
@@ -101,7 +117,7 @@ class SceneLoaderTest {
     @Test
     void jsonIsAccepted() throws SceneException {
         World world = SceneLoader.load("s.json", "{\"image\": {\"width\": 8, \"height\": 8}, \"objects\": "
-                                                 + "[{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2}]}");
+                                                 + "[{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 2}]}").world();
         assertEquals(8, world.viewPlane().hres());
     }
 
@@ -110,7 +126,7 @@ class SceneLoaderTest {
         String doc = Files.readString(Path.of("docs/scene-format.md"));
         int start = doc.indexOf("```yaml\n") + 8;
         String example = doc.substring(start, doc.indexOf("```", start));
-        World world = SceneLoader.load("docs/scene-format.md", example);
+        World world = SceneLoader.load("docs/scene-format.md", example).world();
         assertEquals(6, world.objects().size());
         assertEquals(800, world.viewPlane().hres());
     }
@@ -207,7 +223,7 @@ class SceneLoaderTest {
         }
         for (int i = 0; i < 3; i++) {
             World world = SceneLoader.load("s.yaml", "ambient: {radiance: 0}\nlights: [{type: point, position: ["
-                                           + 2 * i + ", 3, 0], intensity: 4}]\n" + materials);
+                                           + 2 * i + ", 3, 0], intensity: 4}]\n" + materials).world();
             assertRgb(expected[i][0], expected[i][1], expected[i][2], trace(world, 2 * i, 3, 0, 0, -1, 0),
                       "material " + "abc".charAt(i));
         }
@@ -236,7 +252,7 @@ class SceneLoaderTest {
             + "  chrome: {type: reflective, kr: 1, reflection-map: {file: sky.hdr}}\n"
             + "objects:\n  - {type: plane, normal: [0, 1, 0], material: floor}\n"
             + "  - {type: sphere, center: [0, 1, 0], material: chrome}\n");
-        World world = SceneLoader.load(dir.resolve("s.yaml"));
+        World world = SceneLoader.load(dir.resolve("s.yaml")).world();
         // the scene's environment, at half intensity: its top row straight up
         assertRgb(0.501953125, 0.501953125, 0.501953125, trace(world, 5, 1, 0, 0, 1, 0), "up");
         // the chrome's own map at full intensity: the sphere's top mirrors the sky straight up
@@ -256,10 +272,10 @@ class SceneLoaderTest {
             + "  glass: {type: dielectric, ior: 1.5, absorption: [0.1, 0, 0.2]}\n"
             + "  brown: {type: reflective, kr: 0.5, fresnel: schlick, reflect-color: [0.6, 0.4, 0.2]}\n"
             + "objects:\n  - {type: sphere, center: [0, 0, 0], material: glass}\n"
-            + "  - {type: sphere, center: [3, 0, 0], material: brown}\n");
+            + "  - {type: sphere, center: [3, 0, 0], material: brown}\n").world();
         assertEquals(1.5, ((raytracer.materials.Dielectric) world.objects().get(0).getMaterial()).ior(), 0);
         // glass with the loaded absorption gives what glass built with it gives, and none does not
-        World built = SceneLoader.load("s.yaml", "background: [1, 1, 1]\nambient: {radiance: 0}\nobjects: []\n");
+        World built = SceneLoader.load("s.yaml", "background: [1, 1, 1]\nambient: {radiance: 0}\nobjects: []\n").world();
         raytracer.shapes.Sphere sphere = new raytracer.shapes.Sphere(raytracer.math.Point3D.ORIGIN, 1);
         sphere.setMaterial(new raytracer.materials.Dielectric(1.5, new raytracer.math.RGBColor(0.1, 0, 0.2), 0, 1000));
         built.addObject(sphere);
@@ -283,13 +299,15 @@ class SceneLoaderTest {
         Files.writeString(dir.resolve("models/quad.mtl"), "newmtl shiny\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 40\n");
         Files.writeString(dir.resolve("models/quad.obj"), "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl shiny\nf 1 2 3 4\n");
         Files.writeString(dir.resolve("scene.yaml"), "objects:\n  - {type: mesh, file: models/quad.obj, smooth: true, bvh: sah}\n");
-        World world = SceneLoader.load(dir.resolve("scene.yaml"));
+        LoadedScene loaded = SceneLoader.load(dir.resolve("scene.yaml"));
+        World world = loaded.world();
         raytracer.accel.MeshBVH mesh = (raytracer.accel.MeshBVH) world.objects().get(0);
         assertEquals(2, mesh.mesh().triangleCount());
         assertTrue(mesh.mesh().hasNormals(), "smooth: true computes vertex normals");
         assertTrue(mesh.getMaterial() instanceof raytracer.materials.Phong, "Ks and Ns make a Phong material");
-        assertTrue(world.timings().keySet().stream().anyMatch(k -> k.startsWith("parse quad.obj")), world.timings().toString());
-        assertTrue(world.timings().keySet().stream().anyMatch(k -> k.startsWith("sah BVH of quad.obj")), world.timings().toString());
+        Map<String, Long> timings = loaded.report().timings();
+        assertTrue(timings.keySet().stream().anyMatch(k -> k.startsWith("parse quad.obj")), timings.toString());
+        assertTrue(timings.keySet().stream().anyMatch(k -> k.startsWith("sah BVH of quad.obj")), timings.toString());
     }
 
     @Test

@@ -29,11 +29,11 @@ class SceneOverridesTest {
             objects:
               - {type: plane, normal: [0, 1, 0]}
             """);
-        World scene = SceneLoader.load(file);
+        World scene = SceneLoader.load(file).world();
         scene.prepare();
         assertEquals(4, scene.lights()[0].sampleCount());
         assertEquals(LightReader.AREA_SAMPLES, scene.lights()[1].sampleCount());
-        World overridden = SceneLoader.load(file, OptionalInt.of(9));
+        World overridden = SceneLoader.load(file, OptionalInt.of(9)).world();
         overridden.prepare();
         Light[] lights = overridden.lights();
         assertEquals(9, lights[0].sampleCount());

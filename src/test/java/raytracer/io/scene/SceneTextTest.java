@@ -27,7 +27,7 @@ class SceneTextTest {
     void oneLongCommentLineLoadsInLinearTime() {
         // SnakeYAML's reader took 4.4 s for a 4 MiB comment and over a minute for 16 MiB (quadratic)
         String comment = "# " + "x".repeat(16 << 20) + "\n";
-        World world = assertTimeoutPreemptively(Duration.ofSeconds(10), () -> SceneLoader.load("long.yaml", comment + SPHERE));
+        World world = assertTimeoutPreemptively(Duration.ofSeconds(10), () -> SceneLoader.load("long.yaml", comment + SPHERE).world());
         assertEquals(1, world.objects().size());
     }
 
@@ -52,7 +52,7 @@ class SceneTextTest {
                 .append("casts-shadows: true}\n");
         }
         assertTrue(text.length() > 3 << 20, "size " + text.length());
-        assertEquals(24_001, SceneLoader.load("many.yaml", text.toString()).objects().size());
+        assertEquals(24_001, SceneLoader.load("many.yaml", text.toString()).world().objects().size());
     }
 
     @Test

@@ -1,0 +1,87 @@
+package raytracer.cli;
+
+import java.nio.file.Path;
+import java.util.function.Supplier;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
+import raytracer.accel.Aggregation;
+import raytracer.core.ShadingPass;
+import raytracer.core.ViewPlane;
+import raytracer.image.DisplayEncoding;
+import raytracer.image.Film;
+import raytracer.render.Workers;
+
+/**
+ * Checks the option values that picocli's types cannot (ranges, names, the output file) and parses
+ * them into a {@link RenderRequest}. Every bad value is a usage error, exit code 2, found before
+ * the scene is loaded.
+ */
+final class OptionChecks {
+    private final CommandLine commandLine;
+
+    OptionChecks(CommandLine commandLine) {
+        this.commandLine = commandLine;
+    }
+
+    RenderRequest check(RenderCommand o) {
+        requireAtLeast("--width", o.width, 1);
+        requireAtLeast("--height", o.height, 1);
+        requireAtLeast("--spp", o.samples, 1);
+        requireWithin("--max-depth", o.maxDepth, 0, ViewPlane.MAX_DEPTH);
+        requireWithin("--threads", o.threads, 1, Workers.MAX_THREADS);
+        requireAtLeast("--repeat", o.repeat, 1);
+        if (o.cutoff != null && !(o.cutoff >= 0 && o.cutoff < 1)) {
+            throw new ParameterException(commandLine, "--cutoff must be in [0, 1), got " + o.cutoff);
+        }
+        if (o.width != null && o.height != null && (long) o.width * o.height > Film.MAX_PIXELS) {
+            throw new ParameterException(commandLine, "--width x --height is " + (long) o.width * o.height
+                                                      + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
+        }
+        Path out = o.output != null ? o.output : OutputFile.defaultFor(o.scene);
+        String unwritable = OutputFile.whyUnwritable(out);
+        if (unwritable != null) {
+            // a bad -o is a bad option value, found before rendering, not after
+            throw new ParameterException(commandLine, "cannot write " + out + ": " + unwritable);
+        }
+        Aggregation.Mode accel = usage(() -> Aggregation.Mode.parse(o.accel));
+        boolean costView = usage(() -> parseView(o.view));
+        ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
+        DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
+        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, o.maxDepth, pass, o.cutoff, encoding);
+        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet);
+    }
+
+    private static boolean parseView(String view) {
+        return switch (view) {
+            case "shaded" -> false;
+            case "bvh-cost" -> true;
+            default -> throw new IllegalArgumentException("unknown view '" + view + "'; allowed: shaded, bvh-cost");
+        };
+    }
+
+    private static DisplayEncoding parseEncoding(String encoding) {
+        return DisplayEncoding.named(encoding).orElseThrow(() -> new IllegalArgumentException(
+            "unknown --encoding '" + encoding + "'; allowed: " + DisplayEncoding.NAMES));
+    }
+
+    /** Runs an option's parser, turning its complaint into a usage error. */
+    private <T> T usage(Supplier<T> parse) {
+        try {
+            return parse.get();
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(commandLine, e.getMessage());
+        }
+    }
+
+    private void requireWithin(String option, Integer value, int min, int max) {
+        if (value != null && (value < min || value > max)) {
+            throw new ParameterException(commandLine, option + " must be " + min + " to " + max + ", got " + value);
+        }
+    }
+
+    private void requireAtLeast(String option, Integer value, int min) {
+        if (value != null && value < min) {
+            throw new ParameterException(commandLine, option + " must be at least " + min + ", got " + value);
+        }
+    }
+}

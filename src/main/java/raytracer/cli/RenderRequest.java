@@ -1,0 +1,15 @@
+package raytracer.cli;
+
+import java.nio.file.Path;
+import raytracer.accel.Aggregation;
+
+/**
+ * The command's options, checked and parsed: everything a {@link RenderRun} needs to know.
+ *
+ * @param scene the scene file, or null for the embedded default scene
+ * @param output the image file, known to be writable
+ * @param costView true for --view bvh-cost
+ */
+record RenderRequest(Path scene, Path output, SceneOverrides overrides, Aggregation.Mode accel, boolean costView,
+                     int threads, long seed, int repeat, boolean stats, boolean quiet) {
+}

@@ -1,0 +1,78 @@
+package raytracer.cli;
+
+import java.io.PrintWriter;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.nio.file.Path;
+import java.util.List;
+import raytracer.accel.ObjectBVH;
+import raytracer.core.World;
+import raytracer.io.scene.LoadReport;
+import raytracer.render.RenderStats;
+
+/**
+ * What a run prints on stderr besides errors: the scene's warnings, a line per --repeat render,
+ * the bvh-cost view's legend, the summary line and the --stats breakdown.
+ */
+final class RunReport {
+    private final PrintWriter err;
+    private final int repeat;
+
+    RunReport(PrintWriter err, int repeat) {
+        this.err = err;
+        this.repeat = repeat;
+    }
+
+    void warnings(List<String> warnings) {
+        warnings.forEach(w -> err.println("render: warning: " + w));
+    }
+
+    void repeat(int i, RenderStats s) {
+        err.printf("render %d of %d: %.3f s, %.2f M rays/s%n", i, repeat, s.seconds(), s.raysPerSecond() / 1e6);
+    }
+
+    /** The cost view's scale, {@code range} from black to white; printed even with --quiet, as it is the image's legend. */
+    void costLegend(double[] range, int samples) {
+        String format = samples == 1 ? "%.0f" : "%.1f";
+        err.printf("bvh-cost: " + format + " to " + format + " bounding-volume tests per %s (black to white)%n",
+                   range[0], range[1], samples == 1 ? "pixel" : "ray, averaged over each pixel");
+    }
+
+    void summary(RenderStats s, Path out) {
+        err.println(summaryLine(s, out));
+    }
+
+    static String summaryLine(RenderStats s, Path out) {
+        return String.format("%s: %dx%d, %d spp, %d thread%s, %.2f s, %.2f M rays/s (%d primary, %d shadow, %d secondary)%s",
+            out, s.width(), s.height(), s.samplesPerPixel(), s.threads(), s.threads() == 1 ? "" : "s",
+            s.seconds(), s.raysPerSecond() / 1e6, s.primaryRays(), s.shadowRays(), s.secondaryRays(),
+            s.nonFiniteSamples() > 0 ? ", WARNING: " + s.nonFiniteSamples() + " non-finite samples dropped" : "");
+    }
+
+    /** The --stats breakdown: load steps and mesh figures, preparation, rays by kind, box tests, peak heap. */
+    void stats(LoadReport load, World world, long loadNanos, long prepareNanos, RenderStats s) {
+        err.printf("stats: load scene %.3f s", loadNanos / 1e9);
+        load.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
+        err.println();
+        load.statistics().forEach(line -> err.println("stats: " + line));
+        boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
+        err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
+                   prepareNanos / 1e9, s.seconds());
+        err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
+                   s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
+        err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
+                   s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0));
+    }
+
+    /** The sum of the peak usage of the heap's memory pools since the JVM started. */
+    static long peakHeapBytes() {
+        long peak = 0;
+        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (pool.getType() == MemoryType.HEAP) {
+                peak += pool.getPeakUsage().getUsed();
+            }
+        }
+        return peak;
+    }
+}
