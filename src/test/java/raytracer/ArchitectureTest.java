@@ -221,6 +221,32 @@ class ArchitectureTest {
         return packages;
     }
 
+    /**
+     * The coursework's reference solutions (src/solutions/java, never in render.jar) sit in the
+     * packages where a student's answers go, so they keep the same layering. The exercises' tests
+     * (src/exercises/java) are test code and are not held to it.
+     */
+    @Test
+    void theReferenceSolutionsKeepTheLayeringToo() throws IOException {
+        Path solutions = Path.of("src/solutions/java/raytracer");
+        List<String> violations = new ArrayList<>();
+        int files = 0;
+        try (Stream<Path> paths = Files.walk(solutions)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                files++;
+                String pkg = solutions.relativize(file.getParent()).toString().replace('/', '.');
+                if (!ALLOWED.containsKey(pkg)) {
+                    violations.add(solutions.relativize(file) + " is in a package without a rule here");
+                }
+                for (String used : sourceReferences(Files.readString(file))) {
+                    check(pkg, used, "solutions/" + solutions.relativize(file), violations);
+                }
+            }
+        }
+        assertTrue(files >= 2, "the reference solutions were not found in " + solutions.toAbsolutePath());
+        assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", new TreeSet<>(violations)));
+    }
+
     // ---- the scanners themselves, on planted references ----
 
     @Test

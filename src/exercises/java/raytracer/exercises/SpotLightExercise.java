@@ -1,0 +1,131 @@
+package raytracer.exercises;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.reflect.Constructor;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import raytracer.core.Light;
+import raytracer.core.ShadeRec;
+import raytracer.lights.PointLight;
+import raytracer.math.Point3D;
+import raytracer.math.RGBColor;
+import raytracer.math.Rgb;
+import raytracer.math.Vec3;
+import raytracer.math.Vector3D;
+
+/**
+ * Exercise 3: a spot light, a point light (Suffern, section 14.4) that shines only into a cone
+ * around its direction: as the point light within falloffStart degrees of the axis, nothing
+ * beyond totalAngle degrees, and in between the point light's value times
+ * ((cos(theta) - cos(total)) / (cos(start) - cos(total)))^4 (pbrt-v3, section 12.2.1). Checked
+ * against the project's PointLight and that closed form.
+ */
+@Tag("exercise")
+class SpotLightExercise {
+    private static Constructor<? extends Light> spot;
+    private static final Point3D POSITION = new Point3D(1, 4, -2);
+    private static final RGBColor COLOR = new RGBColor(1, 0.8, 0.5);
+
+    private final Scratch scratch = new Scratch();
+
+    @BeforeAll
+    static void findTheClass() {
+        spot = Student.constructor(3, "raytracer.lights.SpotLight", Light.class, double.class, RGBColor.class, Point3D.class,
+                                   Vector3D.class, double.class, double.class);
+    }
+
+    private static Light spot(Vector3D direction, double total, double start) {
+        return Student.create(spot, 30.0, COLOR, POSITION, direction, total, start);
+    }
+
+    /** A surface point at angle theta (degrees) from the downward axis, at distance r from the light. */
+    private ShadeRec pointAt(double thetaDegrees, double phiDegrees, double r) {
+        double theta = Math.toRadians(thetaDegrees);
+        double phi = Math.toRadians(phiDegrees);
+        double x = POSITION.x() + r * Math.sin(theta) * Math.cos(phi);
+        double y = POSITION.y() - r * Math.cos(theta);
+        double z = POSITION.z() + r * Math.sin(theta) * Math.sin(phi);
+        return scratch.surfacePoint(x, y, z, 0, 1, 0);
+    }
+
+    private static Rgb radiance(Light light, ShadeRec sr) {
+        Rgb out = new Rgb();
+        light.L(sr, out);
+        return out;
+    }
+
+    @Test
+    void withinTheInnerConeItIsThePointLight() {
+        Light spot = spot(new Vector3D(0, -1, 0), 40, 25);
+        Light point = new PointLight(30.0, COLOR, POSITION);
+        SplittableRandom random = new SplittableRandom(9);
+        Vec3 fromSpot = new Vec3();
+        Vec3 fromPoint = new Vec3();
+        for (int i = 0; i < 1000; i++) {
+            ShadeRec sr = pointAt(25 * random.nextDouble(), 360 * random.nextDouble(), 0.1 + 10 * random.nextDouble());
+            Rgb expected = radiance(point, sr);
+            Rgb got = radiance(spot, sr);
+            assertEquals(expected.r, got.r, 1e-12 * expected.r, "red");
+            assertEquals(expected.b, got.b, 1e-12 * expected.b, "blue");
+            double d = spot.getDirection(sr, fromSpot);
+            assertEquals(point.getDirection(sr, fromPoint), d, 1e-12 * d, "the distance to the light");
+            assertEquals(0, fromSpot.x - fromPoint.x, 1e-12, "the unit direction to the light");
+            assertEquals(0, fromSpot.y - fromPoint.y, 1e-12, "the unit direction to the light");
+            assertEquals(0, fromSpot.z - fromPoint.z, 1e-12, "the unit direction to the light");
+        }
+    }
+
+    @Test
+    void beyondTheConeItIsDark() {
+        Light spot = spot(new Vector3D(0, -1, 0), 40, 25);
+        for (double theta : new double[] {40.01, 60, 90, 135, 180}) {
+            assertTrue(radiance(spot, pointAt(theta, 17, 3)).isBlack(), "at " + theta + " degrees from the axis");
+        }
+    }
+
+    @Test
+    void betweenTheConesItFallsOffAsTheFourthPowerOfTheCosineRatio() {
+        Light spot = spot(new Vector3D(0, -1, 0), 40, 25);
+        double cosTotal = Math.cos(Math.toRadians(40));
+        double cosStart = Math.cos(Math.toRadians(25));
+        for (double theta : new double[] {26, 30, 35, 39}) {
+            double r = 2.5;
+            double ratio = (Math.cos(Math.toRadians(theta)) - cosTotal) / (cosStart - cosTotal);
+            double expected = 30 * COLOR.g() / (r * r) * Math.pow(ratio, 4);
+            assertEquals(expected, radiance(spot, pointAt(theta, 200, r)).g, 1e-9 * expected, "at " + theta + " degrees");
+        }
+    }
+
+    @Test
+    void theDirectionNeedNotBeUnitAndMayPointAnywhere() {
+        Light longAxis = spot(new Vector3D(0, -5, 0), 30, 10);
+        ShadeRec sr = pointAt(20, 0, 2);
+        double ratio = (Math.cos(Math.toRadians(20)) - Math.cos(Math.toRadians(30)))
+                       / (Math.cos(Math.toRadians(10)) - Math.cos(Math.toRadians(30)));
+        assertEquals(30 * COLOR.r() / 4 * Math.pow(ratio, 4), radiance(longAxis, sr).r, 1e-9);
+        // a spot pointing along +x lights a point on the +x side, not one below it
+        Light sideways = spot(new Vector3D(1, 0, 0), 30, 10);
+        assertEquals(30 * COLOR.r() / 9, radiance(sideways, scratch.surfacePoint(POSITION.x() + 3, POSITION.y(), POSITION.z(), -1, 0, 0)).r, 1e-12);
+        assertTrue(radiance(sideways, pointAt(0, 0, 3)).isBlack());
+    }
+
+    @Test
+    void itCastsShadowsLikeEveryLight() {
+        assertTrue(spot(new Vector3D(0, -1, 0), 40, 25).castsShadows());
+    }
+
+    @Test
+    void impossibleConesAreRefused() {
+        Vector3D down = new Vector3D(0, -1, 0);
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 20, 30), "the falloff cannot start outside the cone");
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 0, 0));
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 180, 10));
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 30, -1));
+        assertThrows(IllegalArgumentException.class, () -> spot(new Vector3D(0, 0, 0), 30, 10), "a direction of length 0");
+    }
+}

@@ -1,0 +1,217 @@
+package raytracer.exercises;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static raytracer.exercises.Scratch.ray;
+
+import java.lang.reflect.Constructor;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import raytracer.core.GeometricObject;
+import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
+import raytracer.math.Ray;
+
+/**
+ * Exercise 5: a torus (Suffern, section 19.5), centred at the origin around the y axis, of swept
+ * radius a (centre of the tube to the axis) and tube radius b. Checked against closed forms and
+ * against an independent search: sphere tracing of the torus's exact distance function.
+ */
+@Tag("exercise")
+class TorusExercise {
+    private static final double A = 2;
+    private static final double B = 0.5;
+    private static Constructor<? extends GeometricObject> torus;
+
+    private final Scratch scratch = new Scratch();
+
+    @BeforeAll
+    static void findTheClass() {
+        torus = Student.constructor(5, "raytracer.shapes.Torus", GeometricObject.class, double.class, double.class);
+    }
+
+    private static GeometricObject torus(double a, double b) {
+        return Student.create(torus, a, b);
+    }
+
+    /** Distance from p to the torus's surface, negative inside the tube. */
+    private static double distance(double a, double b, double x, double y, double z) {
+        return Math.hypot(Math.hypot(x, z) - a, y) - b;
+    }
+
+    @Test
+    void aRayAlongTheAxisPassesThroughTheHole() {
+        GeometricObject t = torus(A, B);
+        assertNull(scratch.hit(t, ray(0, 5, 0, 0, -1, 0)));
+        assertFalse(t.shadowHit(ray(0, 5, 0, 0, -1, 0), Double.POSITIVE_INFINITY, scratch.sr));
+    }
+
+    @Test
+    void aRayDownThroughTheTubesCentreCircleHitsItsTop() {
+        ShadeRec sr = scratch.hit(torus(A, B), ray(A, 5, 0, 0, -1, 0));
+        assertNotNull(sr, "a ray down at x = a must hit the top of the tube");
+        assertEquals(5 - B, sr.t, 1e-9);
+        assertEquals(B, sr.hitPoint.y, 1e-9);
+        assertEquals(1, sr.normal.y, 1e-9, "the normal at the top of the tube points up");
+        assertTrue(sr.frontFace);
+    }
+
+    @Test
+    void distancesAreInUnitsOfTheRaysParameterNotOfLength() {
+        // instances hand the torus unnormalised directions: t must still put o + t d on the surface
+        ShadeRec sr = scratch.hit(torus(A, B), ray(A, 5, 0, 0, -4, 0));
+        assertNotNull(sr);
+        assertEquals((5 - B) / 4, sr.t, 1e-9);
+    }
+
+    @Test
+    void aRayAlongTheEquatorMeetsTheOuterAndTheInnerSurface() {
+        GeometricObject t = torus(A, B);
+        ShadeRec outer = scratch.hit(t, ray(-10, 0, 0, 1, 0, 0));
+        assertNotNull(outer);
+        assertEquals(10 - (A + B), outer.t, 1e-9);
+        assertEquals(-1, outer.normal.x, 1e-9);
+        // from the centre of the hole, the first surface is the inner equator at distance a - b
+        ShadeRec inner = scratch.hit(t, ray(0, 0, 0, 1, 0, 0));
+        assertNotNull(inner);
+        assertEquals(A - B, inner.t, 1e-9);
+        assertEquals(-1, inner.normal.x, 1e-9, "the inner equator's normal points towards the axis");
+        assertTrue(inner.frontFace);
+    }
+
+    @Test
+    void aRayFromInsideTheTubeLeavesThroughItsBackFace() {
+        ShadeRec sr = scratch.hit(torus(A, B), ray(0, 0, A, 0, 1, 0));
+        assertNotNull(sr);
+        assertEquals(B, sr.t, 1e-9);
+        assertFalse(sr.frontFace, "the ray leaves the tube: it sees the back of the surface");
+        assertEquals(-1, sr.normal.y, 1e-9, "the normal is turned to face the ray");
+    }
+
+    @Test
+    void raysJustAboveTheTopMissAndJustBelowItHit() {
+        GeometricObject t = torus(A, B);
+        assertNull(scratch.hit(t, ray(-10, B + 1e-6, 0, 1, 0, 0)));
+        ShadeRec sr = scratch.hit(t, ray(-10, B - 1e-3, 0, 1, 0, 0));
+        assertNotNull(sr);
+        double x = -A - Math.sqrt(B * B - (B - 1e-3) * (B - 1e-3));
+        assertEquals(x + 10, sr.t, 1e-9);
+    }
+
+    @Test
+    void shadowHitRespectsTMax() {
+        GeometricObject t = torus(A, B);
+        Ray r = ray(-10, 0, 0, 1, 0, 0);
+        assertTrue(t.shadowHit(r, 10 - (A + B) + 1e-6, scratch.sr));
+        assertFalse(t.shadowHit(r, 10 - (A + B) - 1e-6, scratch.sr));
+        assertFalse(t.shadowHit(ray(-10, 0, 0, -1, 0, 0), Double.POSITIVE_INFINITY, scratch.sr), "the torus is behind");
+    }
+
+    @Test
+    void theBoundingBoxHoldsTheTorusAndLittleElse() {
+        BBox box = torus(A, B).boundingBox();
+        double r = A + B;
+        for (double[] p : new double[][] {{r, 0, 0}, {-r, 0, 0}, {0, 0, r}, {0, 0, -r}, {A, B, 0}, {-A, -B, 0}}) {
+            assertTrue(box.contains(p[0], p[1], p[2]), "the box must hold the extreme point " + p[0] + ", " + p[1] + ", " + p[2]);
+        }
+        assertTrue(box.y1() - box.y0() <= 2 * B * 1.01 && box.x1() - box.x0() <= 2 * r * 1.01,
+                   "a box of the torus is (a + b, b, a + b) either side of the centre, got " + box);
+    }
+
+    @Test
+    void badRadiiAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> torus(1, 0));
+        assertThrows(IllegalArgumentException.class, () -> torus(1, -0.5));
+        assertThrows(IllegalArgumentException.class, () -> torus(0.5, 1), "a ring torus needs a > b");
+        assertThrows(IllegalArgumentException.class, () -> torus(Double.NaN, 0.5));
+    }
+
+    /**
+     * Random rays, with random origins around the torus and random directions, against sphere
+     * tracing of its exact distance function: the same first hit, or both a miss; hit points on the
+     * surface within their error bound; normals along the distance function's gradient.
+     */
+    @Test
+    void randomRaysAgreeWithSphereTracing() {
+        SplittableRandom random = new SplittableRandom(11);
+        int hits = 0;
+        for (int i = 0; i < 5000; i++) {
+            double a = 0.2 + 3 * random.nextDouble();
+            double b = a * (0.05 + 0.9 * random.nextDouble());
+            GeometricObject t = torus(a, b);
+            double s = 3 * (a + b);
+            double ox = s * (2 * random.nextDouble() - 1);
+            double oy = s * (2 * random.nextDouble() - 1);
+            double oz = s * (2 * random.nextDouble() - 1);
+            if (distance(a, b, ox, oy, oz) < 1e-3 * b) {
+                continue; // on or inside the tube: sphere tracing needs an origin outside
+            }
+            // aim near the torus so that about half the rays hit
+            double tx = (a + b) * (2 * random.nextDouble() - 1) - ox;
+            double ty = b * (2 * random.nextDouble() - 1) - oy;
+            double tz = (a + b) * (2 * random.nextDouble() - 1) - oz;
+            double len = Math.sqrt(tx * tx + ty * ty + tz * tz);
+            Ray r = ray(ox, oy, oz, tx / len, ty / len, tz / len);
+            double expected = sphereTrace(a, b, r);
+            if (Double.isNaN(expected)) {
+                continue; // grazing: the search did not settle
+            }
+            ShadeRec sr = scratch.hit(t, r);
+            String where = "ray " + i + " (a = " + a + ", b = " + b + ")";
+            if (expected == Double.POSITIVE_INFINITY) {
+                assertNull(sr, where + " misses the torus but a hit was reported at t = " + (sr == null ? 0 : sr.t));
+                continue;
+            }
+            assertNotNull(sr, where + " hits the torus at t = " + expected);
+            hits++;
+            assertEquals(expected, sr.t, 1e-7 * s, where);
+            assertEquals(0, distance(a, b, sr.hitPoint.x, sr.hitPoint.y, sr.hitPoint.z),
+                         1e-9 * s + sr.hitError.x + sr.hitError.y + sr.hitError.z, where + ": the hit point lies off the surface");
+            assertTrue(sr.hitError.x >= 0 && sr.hitError.y >= 0 && sr.hitError.z >= 0 && sr.hitError.x < 1e-6 * s,
+                       where + ": hitError must bound the hit point's rounding error, got " + sr.hitError);
+            double[] n = gradient(a, sr.hitPoint.x, sr.hitPoint.y, sr.hitPoint.z);
+            double along = Math.abs(n[0] * sr.normal.x + n[1] * sr.normal.y + n[2] * sr.normal.z);
+            assertEquals(1, along, 1e-7, where + ": the normal must be the surface's");
+            assertTrue(r.dx * sr.normal.x + r.dy * sr.normal.y + r.dz * sr.normal.z < 0, where + ": the normal faces the ray");
+            assertTrue(t.shadowHit(r, sr.t * (1 + 1e-6), scratch.sr) && !t.shadowHit(r, sr.t * (1 - 1e-6), scratch.sr),
+                       where + ": shadowHit must find the same hit");
+        }
+        assertTrue(hits > 1000, "too few hits to judge: " + hits);
+    }
+
+    /**
+     * The first hit by sphere tracing (Hart 1996): step by the distance to the surface, which never
+     * oversteps it. +infinity when the ray leaves for good, NaN when 100,000 steps did not settle.
+     */
+    private static double sphereTrace(double a, double b, Ray r) {
+        double reach = Math.sqrt(r.ox * r.ox + r.oy * r.oy + r.oz * r.oz) + a + b;
+        double t = 0;
+        for (int step = 0; step < 100_000; step++) {
+            double d = distance(a, b, r.ox + t * r.dx, r.oy + t * r.dy, r.oz + t * r.dz);
+            if (d < 1e-12 * (a + b)) {
+                return t;
+            }
+            t += d;
+            if (t > 2 * reach) {
+                return Double.POSITIVE_INFINITY;
+            }
+        }
+        return Double.NaN;
+    }
+
+    /** The unit gradient of the distance function at a point of the surface. */
+    private static double[] gradient(double a, double x, double y, double z) {
+        double rho = Math.hypot(x, z);
+        double gx = (rho - a) * x / rho;
+        double gy = y;
+        double gz = (rho - a) * z / rho;
+        double len = Math.sqrt(gx * gx + gy * gy + gz * gz);
+        return new double[] {gx / len, gy / len, gz / len};
+    }
+}
