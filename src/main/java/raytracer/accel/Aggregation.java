@@ -8,7 +8,7 @@ import raytracer.core.GeometricObject;
 /**
  * How the world's top-level objects are searched: a plain list, or a BVH over the bounded ones
  * (planes stay in the list). {@link Mode#AUTO} uses a list below {@link #AUTO_THRESHOLD} bounded
- * objects, where measurements show a list is faster (see README, "list or BVH").
+ * objects, where measurements show a list is faster (docs/performance.md, "List or BVH").
  */
 public final class Aggregation {
     /**

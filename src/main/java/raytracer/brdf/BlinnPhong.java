@@ -7,7 +7,7 @@ import raytracer.math.Rgb;
 import raytracer.math.Vec3;
 
 /**
- * The normalised Blinn-Phong lobe around the half vector, as Ngan et al. fit it (brdf-params.md):
+ * The normalised Blinn-Phong lobe around the half vector, as Ngan et al. fit it (docs/brdf-params.md):
  * f_s = rho_s (n + 2) / (2 pi) cos^n(theta_h). Zero when either direction is below the surface.
  */
 public final class BlinnPhong implements BRDF {

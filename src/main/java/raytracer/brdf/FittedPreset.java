@@ -7,9 +7,8 @@ import raytracer.math.RGBColor;
 
 /**
  * The report's figure 2 materials: Ngan, Durand and Matusik's 2005 fits of three MERL materials to
- * Ward, Ward-Duer and Blinn-Phong (values from shared/brdf-params.md, which quotes the BSDF
- * benchmark bbm and the report author's code). Each gives a diffuse rho_d, a specular rho_s and the
- * lobe's alpha (Ward) or exponent n (Blinn-Phong).
+ * Ward, Ward-Duer and Blinn-Phong (values and their sources: docs/brdf-params.md). Each gives a
+ * diffuse rho_d, a specular rho_s and the lobe's alpha (Ward) or exponent n (Blinn-Phong).
  */
 public enum FittedPreset {
     NICKEL_WARD("nickel", Model.WARD, rgb(0.0221, 0.0178, 0.0107), rgb(0.204, 0.154, 0.0946), 0.0432),

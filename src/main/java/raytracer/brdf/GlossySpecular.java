@@ -45,7 +45,7 @@ public final class GlossySpecular implements BRDF {
      * (e + 1) / (2 pi) cos^e(alpha) (phi = 2 pi u, cos(alpha) = (1 - v)^(1/(e+1)); SPEC section 2)
      * and writes the weight f cos(theta_i) / pdf = ks cs 2 pi / (e + 1) cos(theta_i) for the
      * report's lobe (cos^e cancels; times (e + 2) / (2 pi) when normalised). A direction below the
-     * surface gives false and a black weight, and still counts as a sample (brdf-params.md).
+     * surface gives false and a black weight, and still counts as a sample (docs/brdf-params.md).
      */
     @Override
     public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {

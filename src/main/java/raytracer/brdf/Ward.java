@@ -8,7 +8,7 @@ import raytracer.math.Vec3;
 
 /**
  * The isotropic Ward lobe (Ward 1992), in the form fitted by Ngan, Durand and Matusik 2005
- * (brdf-params.md): f_s = rho_s exp(-tan^2 theta_h / alpha^2) / (4 pi alpha^2 N), with
+ * (docs/brdf-params.md): f_s = rho_s exp(-tan^2 theta_h / alpha^2) / (4 pi alpha^2 N), with
  * N = sqrt(cos theta_i cos theta_o) (Ward) or N = cos theta_i cos theta_o (Dür's normalisation,
  * "Ward-Duer"). Zero when either direction is below the surface.
  */

@@ -24,7 +24,7 @@ final class DirectLighting {
         /** (f_d + f_s) cos(theta_i), the integrand of the reflection equation. */
         PHYSICAL,
         /**
-         * The report's quirks (brdf-params.md), for its figure 2's brightness: f_d pi cos(theta_i)
+         * The report's quirks (docs/brdf-params.md), for its figure 2's brightness: f_d pi cos(theta_i)
          * + f_s, the diffuse term without its 1/pi and the specular one without cos(theta_i).
          */
         REPORT,

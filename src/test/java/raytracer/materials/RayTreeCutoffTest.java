@@ -28,8 +28,9 @@ import raytracer.tracers.Whitted;
  * absorbing glass, clear glass and a Fresnel mirror over a floor, one ray per pixel through its
  * centre and point lights only, so that the two renders differ by the pruning alone and not by
  * noise. Measured: at c = 0.001 the worst pixel moves by 3.3 c and the mean by 0.11 c, with 71% fewer
- * secondary and shadow rays. The stated tolerance (README, "Figures of the report"): with cutoff c no pixel moves by
- * more than 5 c and the image mean by less than c / 4, in linear radiance where 1 is white.
+ * secondary and shadow rays. The stated tolerance (docs/performance.md, "Figure 10"): with cutoff c
+ * no pixel moves by more than 5 c and the image mean by less than c / 4, in linear radiance where 1
+ * is white.
  */
 class RayTreeCutoffTest {
     private static final Sampler CENTRE = (n, rng, xs, ys) -> {
