@@ -17,7 +17,7 @@ import raytracer.math.Vector3D;
 import raytracer.samplers.Regular;
 
 /**
- * Exercise 2: the spherical panoramic camera (Suffern, section 11.3). The image's x runs through
+ * Exercise 2: the spherical panoramic camera (Suffern, chapter 11). The image's x runs through
  * the azimuth lambda in [-h/2, h/2] and its y through the elevation psi in [-v/2, v/2] (h and v
  * the horizontal and vertical fields of view), and the pixel's ray from the eye is
  * cos(psi) sin(lambda) u + sin(psi) v - cos(psi) cos(lambda) w in the camera's frame (u right,

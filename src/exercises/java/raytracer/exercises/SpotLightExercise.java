@@ -19,7 +19,7 @@ import raytracer.math.Vec3;
 import raytracer.math.Vector3D;
 
 /**
- * Exercise 3: a spot light, a point light (Suffern, section 14.4) that shines only into a cone
+ * Exercise 3: a spot light, a point light (Suffern, chapter 14) that shines only into a cone
  * around its direction: as the point light within falloffStart degrees of the axis, nothing
  * beyond totalAngle degrees, and in between the point light's value times
  * ((cos(theta) - cos(total)) / (cos(start) - cos(total)))^4 (pbrt-v3, section 12.2.1). Checked

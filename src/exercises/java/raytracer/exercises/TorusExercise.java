@@ -19,7 +19,7 @@ import raytracer.math.BBox;
 import raytracer.math.Ray;
 
 /**
- * Exercise 5: a torus (Suffern, section 19.5), centred at the origin around the y axis, of swept
+ * Exercise 5: a torus (Suffern, chapter 19), centred at the origin around the y axis, of swept
  * radius a (centre of the tube to the axis) and tube radius b. Checked against closed forms and
  * against an independent search: sphere tracing of the torus's exact distance function.
  */

@@ -39,7 +39,7 @@ public final class RegularGrid extends GeometricObject {
             all = all.union(b);
         }
         box = all;
-        // cells of side s with nx ny nz ~ DENSITY N (Suffern, section 22.2); a flat side gets one layer
+        // cells of side s with nx ny nz ~ DENSITY N (Suffern, chapter 22); a flat side gets one layer
         double wx = box.x1() - box.x0();
         double wy = box.y1() - box.y0();
         double wz = box.z1() - box.z0();

@@ -8,7 +8,7 @@ import raytracer.math.Vector3D;
 
 /**
  * Reference solution of exercise 2 (docs/teaching.md): the spherical panoramic camera (Suffern,
- * section 11.3). The image's x runs through the azimuth lambda, its y through the elevation psi,
+ * chapter 11). The image's x runs through the azimuth lambda, its y through the elevation psi,
  * each over its field of view, and the ray leaves the eye along
  * cos(psi) sin(lambda) u + sin(psi) v - cos(psi) cos(lambda) w.
  */

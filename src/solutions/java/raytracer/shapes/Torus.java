@@ -8,8 +8,8 @@ import raytracer.math.Rounding;
 
 /**
  * Reference solution of exercise 5 (docs/teaching.md): a torus around the y axis, centred at the
- * origin, with swept radius a (axis to the centre of the tube) and tube radius b (Suffern, section
- * 19.5). Its points satisfy (|p|^2 + a^2 - b^2)^2 = 4 a^2 (x^2 + z^2); along a ray that is a quartic
+ * origin, with swept radius a (axis to the centre of the tube) and tube radius b (Suffern,
+ * chapter 19). Its points satisfy (|p|^2 + a^2 - b^2)^2 = 4 a^2 (x^2 + z^2); along a ray that is a quartic
  * in t, whose smallest root {@link QuarticRoot} finds. Move and turn it with an instance.
  */
 public final class Torus extends GeometricObject {
