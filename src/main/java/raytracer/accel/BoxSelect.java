@@ -117,36 +117,4 @@ final class BoxSelect {
             boxes[pb + c] = t;
         }
     }
-
-    /** The union of the boxes at positions [from, to), written to out[at .. at + 6). */
-    static void union(float[] boxes, int from, int to, float[] out, int at) {
-        float x0 = Float.POSITIVE_INFINITY;
-        float y0 = Float.POSITIVE_INFINITY;
-        float z0 = Float.POSITIVE_INFINITY;
-        float x1 = Float.NEGATIVE_INFINITY;
-        float y1 = Float.NEGATIVE_INFINITY;
-        float z1 = Float.NEGATIVE_INFINITY;
-        // comparisons rather than Math.min/max: a running extreme rarely changes, so the branches
-        // predict well, where Math.min's NaN-and-zero handling costs a blend sequence per value
-        for (int p = 6 * from; p < 6 * to; p += 6) {
-            float v = boxes[p];
-            x0 = v < x0 ? v : x0;
-            v = boxes[p + 1];
-            y0 = v < y0 ? v : y0;
-            v = boxes[p + 2];
-            z0 = v < z0 ? v : z0;
-            v = boxes[p + 3];
-            x1 = v > x1 ? v : x1;
-            v = boxes[p + 4];
-            y1 = v > y1 ? v : y1;
-            v = boxes[p + 5];
-            z1 = v > z1 ? v : z1;
-        }
-        out[at] = x0;
-        out[at + 1] = y0;
-        out[at + 2] = z0;
-        out[at + 3] = x1;
-        out[at + 4] = y1;
-        out[at + 5] = z1;
-    }
 }

@@ -4,6 +4,8 @@
  * {@link raytracer.core.GeometricObject}, {@link raytracer.core.Material}, {@link raytracer.core.BRDF},
  * {@link raytracer.core.Light}, {@link raytracer.core.Tracer}, {@link raytracer.core.Camera} and
  * {@link raytracer.core.Sampler}. The families ({@code shapes}, {@code materials}, ...) implement these;
- * the renderer sees only these.
+ * the renderer sees only these. A worker's scratch ({@link raytracer.core.WorkerScratch}) lives here
+ * too, with what the families need per worker, such as the BVH traversal state
+ * ({@link raytracer.core.TraversalStack}).
  */
 package raytracer.core;

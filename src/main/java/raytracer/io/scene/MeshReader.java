@@ -20,6 +20,7 @@ import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.math.RGBColor;
+import raytracer.shapes.mesh.TriangleMesh;
 import raytracer.textures.ImageTexture;
 
 /**
@@ -59,7 +60,7 @@ final class MeshReader {
                 materials.add(fromMtl(m, textures, world));
             }
         }
-        // the build's time includes the triangles' boxes and the mesh's leaf-ordered vertex copy
+        // the build's time includes the triangles' boxes and renumbering them in leaf order
         long buildStart = System.nanoTime();
         FlatBVH bvh = builder.equals("median")
             ? new MedianSplitBuilder(MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))
@@ -70,7 +71,7 @@ final class MeshReader {
         world.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)",
                            built - buildStart);
         model.warnings().forEach(world::addWarning);
-        normalMaps(o, model, mesh, textures, world);
+        normalMaps(o, model, mesh.triangles(), textures, world);
         mesh.setMaterial(override != null ? override
                          : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
@@ -81,7 +82,7 @@ final class MeshReader {
      * {@code none}; without the key, each MTL material's norm / map_Bump read as a tangent-space
      * normal map (OpenGL convention).
      */
-    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, World world)
+    private static void normalMaps(YamlObject o, ObjModel model, TriangleMesh mesh, TextureReader textures, World world)
             throws SceneException {
         if (o.has("normal-map") && o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
             String value = o.requiredString("normal-map");

@@ -89,6 +89,25 @@ public final class Mesh {
         return materialIds;
     }
 
+    /**
+     * The same mesh with its triangles renumbered: triangle k of the result is triangle
+     * {@code order[k]} of this one, with its material id. The vertex arrays are shared.
+     */
+    public Mesh reordered(int[] order) {
+        if (order.length != triangleCount()) {
+            throw new IllegalArgumentException("need one entry per triangle, got " + order.length + " for " + triangleCount());
+        }
+        int[] renumbered = new int[triangles.length];
+        int[] ids = materialIds == null ? null : new int[materialIds.length];
+        for (int k = 0; k < order.length; k++) {
+            System.arraycopy(triangles, 3 * order[k], renumbered, 3 * k, 3);
+            if (ids != null) {
+                ids[k] = materialIds[order[k]];
+            }
+        }
+        return new Mesh(positions, normals, uvs, renumbered, ids);
+    }
+
     public BBox bounds() {
         double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
