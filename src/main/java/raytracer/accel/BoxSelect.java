@@ -2,15 +2,16 @@ package raytracer.accel;
 
 /**
  * Selection over primitives stored as float boxes (six per primitive) with their ids beside them,
- * keyed by the box's centroid on one axis: afterwards position k holds the primitive a full sort
- * would put there, with no larger key before it and no smaller key after it. Boxes move with their
- * ids, so the passes read memory in order.
+ * in the order of the report's sort: by the centroid on one axis ({@link FloatBoxes#centroidKey}),
+ * ties by id, so that no two primitives are equal and the median is one primitive. Afterwards
+ * position k holds the primitive a full sort would put there, with only smaller ones before it
+ * and larger ones after. Boxes move with their ids, so the passes read memory in order.
  *
  * <p>Large ranges use Floyd and Rivest's SELECT (CACM 18(3), 1975): the k-th element of a window
  * of about n^(2/3) elements around k is found first, recursively, and is nearly the k-th of the
- * whole range, so one partition pass around it leaves only a sliver to finish; about 1.5 n
- * comparisons for a median instead of about 2.75 n for quickselect with a median-of-three pivot
- * (Hoare's FIND, 1961), which finishes the smaller ranges.
+ * whole range, so one partition around it leaves only a sliver to finish; about 1.5 n comparisons
+ * for a median instead of about 2.75 n for quickselect with a median-of-three pivot (Hoare's FIND,
+ * 1961), which finishes the smaller ranges.
  */
 final class BoxSelect {
     /** Ranges this short are finished by insertion sort. */
@@ -21,13 +22,19 @@ final class BoxSelect {
     private BoxSelect() {
     }
 
-    /** Selects within positions [from, to) so that position k holds its sorted element. */
+    /** Selects within positions from .. to - 1 so that position k holds its sorted element. */
     static void nth(float[] boxes, int[] ids, int axis, int from, int to, int k) {
         select(boxes, ids, axis, from, to - 1, k);
     }
 
+    /** Sorts positions from .. to - 1 (a leaf's few primitives). */
+    static void sort(float[] boxes, int[] ids, int axis, int from, int to) {
+        insertionSort(boxes, ids, axis, from, to - 1);
+    }
+
     private static void select(float[] boxes, int[] ids, int axis, int lo, int hi, int k) {
         while (hi - lo >= SMALL) {
+            int pivot;
             if (hi - lo > WINDOWED) {
                 // a window around k whose k-th element lies within a few standard deviations of
                 // the range's k-th, with the sizes of Floyd and Rivest's algorithm 489
@@ -39,70 +46,76 @@ final class BoxSelect {
                 int windowLo = (int) Math.max(lo, Math.floor(k - i * s / n + sd));
                 int windowHi = (int) Math.min(hi, Math.floor(k + (n - i) * s / n + sd));
                 select(boxes, ids, axis, windowLo, windowHi, k);
+                pivot = k;
             } else {
-                // median of three to k, as pivot
+                // the median of the first, middle and last elements
                 int mid = (lo + hi) >>> 1;
-                if (key(boxes, axis, mid) < key(boxes, axis, lo)) {
+                if (before(boxes, ids, axis, mid, lo)) {
                     swap(boxes, ids, mid, lo);
                 }
-                if (key(boxes, axis, hi) < key(boxes, axis, lo)) {
+                if (before(boxes, ids, axis, hi, lo)) {
                     swap(boxes, ids, hi, lo);
                 }
-                if (key(boxes, axis, hi) < key(boxes, axis, mid)) {
+                if (before(boxes, ids, axis, hi, mid)) {
                     swap(boxes, ids, hi, mid);
                 }
-                swap(boxes, ids, mid, k);
+                pivot = mid;
             }
-            long split = partition(boxes, ids, axis, lo, hi, key(boxes, axis, k));
-            int i = (int) (split >>> 32);
-            int j = (int) split;
-            if (k <= j) {
-                hi = j;
-            } else if (k >= i) {
-                lo = i;
+            swap(boxes, ids, lo, pivot);
+            int p = partition(boxes, ids, axis, lo, hi);
+            if (k < p) {
+                hi = p - 1;
+            } else if (k > p) {
+                lo = p + 1;
             } else {
-                return; // j < k < i: k holds the pivot value
+                return;
             }
         }
         insertionSort(boxes, ids, axis, lo, hi);
     }
 
     /**
-     * Hoare's partition of [lo, hi] around {@code pivot}: equal keys stop both scans, so runs of
-     * equal keys still split evenly. Returns the final scan positions i (high 32 bits) and j (low):
-     * keys at or before j are not above the pivot, keys at or after i are not below it. A method of
-     * its own, like {@link #insertionSort}, so that the JIT compiles each loop early and on its own.
+     * Partitions positions lo .. hi around the pivot at lo (Sedgewick and Wayne, Algorithms, 4th
+     * ed., section 2.3) and returns where the pivot ends: smaller elements before, larger after.
      */
-    private static long partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivot) {
+    private static int partition(float[] boxes, int[] ids, int axis, int lo, int hi) {
+        // a method of its own, like insertionSort, so that the JIT compiles each loop early
+        float pivotKey = FloatBoxes.centroidKey(boxes, lo, axis);
+        int pivotId = ids[lo];
         int i = lo;
-        int j = hi;
-        while (i <= j) {
-            while (key(boxes, axis, i) < pivot) {
+        int j = hi + 1;
+        while (true) {
+            do {
                 i++;
-            }
-            while (key(boxes, axis, j) > pivot) {
+            } while (i < hi && before(FloatBoxes.centroidKey(boxes, i, axis), ids[i], pivotKey, pivotId));
+            do {
                 j--;
+            } while (j > lo && before(pivotKey, pivotId, FloatBoxes.centroidKey(boxes, j, axis), ids[j]));
+            if (i >= j) {
+                break;
             }
-            if (i <= j) {
-                swap(boxes, ids, i, j);
-                i++;
-                j--;
-            }
+            swap(boxes, ids, i, j);
         }
-        return (long) i << 32 | (j & 0xffffffffL);
+        swap(boxes, ids, lo, j);
+        return j;
     }
 
     private static void insertionSort(float[] boxes, int[] ids, int axis, int lo, int hi) {
         for (int i = lo + 1; i <= hi; i++) {
-            for (int j = i; j > lo && key(boxes, axis, j) < key(boxes, axis, j - 1); j--) {
+            for (int j = i; j > lo && before(boxes, ids, axis, j, j - 1); j--) {
                 swap(boxes, ids, j, j - 1);
             }
         }
     }
 
-    /** Twice the centroid on the axis: the same order, one operation less. */
-    private static float key(float[] boxes, int axis, int i) {
-        return boxes[6 * i + axis] + boxes[6 * i + 3 + axis];
+    /** True when the primitive at position a comes before the one at b. */
+    private static boolean before(float[] boxes, int[] ids, int axis, int a, int b) {
+        return before(FloatBoxes.centroidKey(boxes, a, axis), ids[a], FloatBoxes.centroidKey(boxes, b, axis), ids[b]);
+    }
+
+    /** The report's order: by key, ties by id. */
+    static boolean before(float keyA, int idA, float keyB, int idB) {
+        return keyA < keyB || (keyA == keyB && idA < idB);
     }
 
     private static void swap(float[] boxes, int[] ids, int a, int b) {

@@ -86,4 +86,9 @@ final class FloatBoxes {
         float ez = box[at + 5] - box[at + 2];
         return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
     }
+
+    /** Twice the centroid of box i on the axis: the builders' sort key (the same order, one operation less). */
+    static float centroidKey(float[] boxes, int i, int axis) {
+        return boxes[6 * i + axis] + boxes[6 * i + 3 + axis];
+    }
 }
