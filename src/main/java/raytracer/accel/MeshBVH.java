@@ -14,9 +14,9 @@ import raytracer.shapes.mesh.TriangleMesh;
  * A triangle mesh under a BVH, the scene object of a mesh: the tree finds the closest triangle,
  * keeping only t, the triangle and its barycentrics (the two-phase hit), and the
  * {@link TriangleMesh} tests the triangles of the leaves the ray reaches and completes the winner.
- * The mesh's triangles are renumbered in the tree's leaf order, so that a leaf's triangles are one
- * run of its index array (12 bytes a triangle, read in order; renumbering the vertices as well
- * measured no faster).
+ * The mesh is renumbered in the tree's leaf order ({@link Mesh#reordered}): a leaf's triangles
+ * are one run of its index array and their vertices lie together, so a leaf is read from a few
+ * places in memory rather than from all over the mesh.
  */
 public final class MeshBVH extends GeometricObject implements Leaves {
     private final TriangleMesh mesh;

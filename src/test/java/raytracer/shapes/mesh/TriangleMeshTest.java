@@ -67,14 +67,42 @@ class TriangleMeshTest {
         assertTrue(sr.normal.z < 0 && sr.geometricNormal.z < 0, "both normals face the ray's origin");
     }
 
+    /**
+     * Four triangles over six vertices (vertex 5 unused), put in the order 2, 0, 3, 1: the
+     * vertices are renumbered by first use, and every triangle keeps its corners' positions,
+     * normals, texture coordinates and material.
+     */
     @Test
-    void reorderingRenumbersTrianglesAndTheirMaterialsAndSharesTheVertices() {
-        double[] p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
-        Mesh mesh = new Mesh(p, null, null, new int[] {0, 1, 2, 1, 3, 2, 0, 3, 2}, new int[] {7, 8, 9});
-        Mesh reordered = mesh.reordered(new int[] {2, 0, 1});
-        assertArrayEquals(new int[] {0, 3, 2, 0, 1, 2, 1, 3, 2}, reordered.triangles());
-        assertArrayEquals(new int[] {9, 7, 8}, reordered.materialIds());
-        assertSame(p, reordered.positions());
-        assertArrayEquals(new int[] {0, 1, 2, 1, 3, 2, 0, 3, 2}, mesh.triangles(), "the original is unchanged");
+    void reorderingRenumbersTrianglesAndVerticesAndKeepsWhatEachCornerHolds() {
+        double[] p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 2, 0, 9, 9, 9};
+        float[] n = new float[18];
+        float[] uv = new float[12];
+        for (int v = 0; v < 6; v++) {
+            n[3 * v + 2] = v; // each vertex's normal and uv say which vertex it was
+            uv[2 * v] = v;
+            uv[2 * v + 1] = 10 + v;
+        }
+        int[] triangles = {0, 1, 2, 1, 3, 2, 3, 4, 2, 0, 4, 1};
+        int[] ids = {7, 8, 9, 6};
+        Mesh mesh = new Mesh(p, n, uv, triangles, ids);
+        int[] order = {2, 0, 3, 1};
+        Mesh reordered = mesh.reordered(order);
+        // first use: old 3, 4, 2 of triangle 2, then 0, 1 of triangle 0; 5 is last
+        assertArrayEquals(new int[] {0, 1, 2, 3, 4, 2, 3, 1, 4, 4, 0, 2}, reordered.triangles());
+        assertArrayEquals(new int[] {9, 7, 6, 8}, reordered.materialIds());
+        for (int k = 0; k < 4; k++) {
+            for (int corner = 0; corner < 3; corner++) {
+                int was = mesh.vertex(order[k], corner);
+                int is = reordered.vertex(k, corner);
+                for (int axis = 0; axis < 3; axis++) {
+                    assertEquals(p[3 * was + axis], reordered.positions()[3 * is + axis]);
+                }
+                assertEquals(was, reordered.normals()[3 * is + 2]);
+                assertEquals(was, reordered.uvs()[2 * is]);
+                assertEquals(10 + was, reordered.uvs()[2 * is + 1]);
+            }
+        }
+        assertEquals(9, reordered.positions()[3 * 5], "the unused vertex goes last");
+        assertArrayEquals(new int[] {0, 1, 2, 1, 3, 2, 3, 4, 2, 0, 4, 1}, mesh.triangles(), "the original is unchanged");
     }
 }
