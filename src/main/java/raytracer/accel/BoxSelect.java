@@ -61,42 +61,44 @@ final class BoxSelect {
                 }
                 pivot = mid;
             }
-            swap(boxes, ids, lo, pivot);
-            int p = partition(boxes, ids, axis, lo, hi);
-            if (k < p) {
-                hi = p - 1;
-            } else if (k > p) {
-                lo = p + 1;
+            float pivotKey = FloatBoxes.centroidKey(boxes, pivot, axis);
+            int pivotId = ids[pivot];
+            int j = partition(boxes, ids, axis, lo, hi, pivotKey, pivotId);
+            if (k <= j) {
+                hi = j;
+            } else if (k == j + 1 && ids[k] == pivotId) {
+                return; // the pivot ended between the two parts, at k
             } else {
-                return;
+                lo = j + 1;
             }
         }
         insertionSort(boxes, ids, axis, lo, hi);
     }
 
     /**
-     * Partitions positions lo .. hi around the pivot at lo (Sedgewick and Wayne, Algorithms, 4th
-     * ed., section 2.3) and returns where the pivot ends: smaller elements before, larger after.
+     * Hoare's partition of positions lo .. hi around the pivot, an element among them given by
+     * its key and id: returns j such that no element at or before j comes after the pivot and
+     * none after j comes before it; the pivot itself is at j + 1 or in one of the two parts.
      */
-    private static int partition(float[] boxes, int[] ids, int axis, int lo, int hi) {
-        // a method of its own, like insertionSort, so that the JIT compiles each loop early
-        float pivotKey = FloatBoxes.centroidKey(boxes, lo, axis);
-        int pivotId = ids[lo];
+    private static int partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivotKey, int pivotId) {
+        // a method of its own, like insertionSort, so that the JIT compiles each loop early. The
+        // scans need no bounds test: the pivot, or an element swapped past, stops each (a bounds
+        // test that is rarely false became a trap, and JFR showed the first pass deoptimised)
         int i = lo;
-        int j = hi + 1;
-        while (true) {
-            do {
+        int j = hi;
+        while (i <= j) {
+            while (before(FloatBoxes.centroidKey(boxes, i, axis), ids[i], pivotKey, pivotId)) {
                 i++;
-            } while (i < hi && before(FloatBoxes.centroidKey(boxes, i, axis), ids[i], pivotKey, pivotId));
-            do {
-                j--;
-            } while (j > lo && before(pivotKey, pivotId, FloatBoxes.centroidKey(boxes, j, axis), ids[j]));
-            if (i >= j) {
-                break;
             }
-            swap(boxes, ids, i, j);
+            while (before(pivotKey, pivotId, FloatBoxes.centroidKey(boxes, j, axis), ids[j])) {
+                j--;
+            }
+            if (i <= j) {
+                swap(boxes, ids, i, j);
+                i++;
+                j--;
+            }
         }
-        swap(boxes, ids, lo, j);
         return j;
     }
 
@@ -108,14 +110,16 @@ final class BoxSelect {
         }
     }
 
-    /** True when the primitive at position a comes before the one at b. */
+    /** True when the primitive at position a comes before the one at position b. */
     private static boolean before(float[] boxes, int[] ids, int axis, int a, int b) {
         return before(FloatBoxes.centroidKey(boxes, a, axis), ids[a], FloatBoxes.centroidKey(boxes, b, axis), ids[b]);
     }
 
     /** The report's order: by key, ties by id. */
     static boolean before(float keyA, int idA, float keyB, int idB) {
-        return keyA < keyB || (keyA == keyB && idA < idB);
+        // & and | rather than && and ||: a tie is rare, and the JIT compiles a rarely taken
+        // branch as a trap, whose first use sends the pass back to the interpreter
+        return keyA < keyB | (keyA == keyB & idA < idB);
     }
 
     private static void swap(float[] boxes, int[] ids, int a, int b) {
