@@ -12,7 +12,7 @@ import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Vector3D;
 import raytracer.shapes.Disk;
 import raytracer.shapes.Sphere;
@@ -41,7 +41,7 @@ class AmbientOcclusionExercise {
     /** The mean green radiance over {@code calls} shadings of the point at the origin with normal (nx, ny, nz). */
     private static double meanRadiance(Light light, int calls, double nx, double ny, double nz, GeometricObject... objects) {
         Scratch scratch = new Scratch(objects);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         double sum = 0;
         for (int call = 0; call < calls; call++) {
             // the renderer reseeds the worker's generator for every pixel

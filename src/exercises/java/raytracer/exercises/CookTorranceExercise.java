@@ -12,8 +12,8 @@ import org.junit.jupiter.api.Test;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Exercise 7: a Cook-Torrance microfacet BRDF, f = D G F / (4 cos(theta_o) cos(theta_i)), with
@@ -37,14 +37,14 @@ class CookTorranceExercise {
         return Student.create(cookTorrance, f0, alpha);
     }
 
-    private static Vec3 direction(double thetaDegrees, double phiDegrees) {
+    private static MutableVec3 direction(double thetaDegrees, double phiDegrees) {
         double theta = Math.toRadians(thetaDegrees);
         double phi = Math.toRadians(phiDegrees);
-        return new Vec3().set(Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta));
+        return new MutableVec3().set(Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta));
     }
 
-    private Rgb f(BRDF brdf, Vec3 wo, Vec3 wi) {
-        Rgb out = new Rgb();
+    private MutableRgb f(BRDF brdf, MutableVec3 wo, MutableVec3 wi) {
+        MutableRgb out = new MutableRgb();
         brdf.f(sr, wo, wi, out);
         return out;
     }
@@ -53,9 +53,9 @@ class CookTorranceExercise {
     void atNormalIncidenceItIsF0OverFourPiAlphaSquared() {
         // h = n: D = 1 / (pi alpha^2) for GGX and Beckmann alike, G = 1, F = f0, cosines 1
         RGBColor f0 = new RGBColor(0.04, 0.5, 0.95);
-        Vec3 n = direction(0, 0);
+        MutableVec3 n = direction(0, 0);
         for (double alpha : new double[] {0.1, 0.3, 0.7}) {
-            Rgb value = f(brdf(f0, alpha), n, n);
+            MutableRgb value = f(brdf(f0, alpha), n, n);
             double scale = 1 / (4 * Math.PI * alpha * alpha);
             assertEquals(f0.r() * scale, value.r, 1e-9 * scale, "red, alpha " + alpha);
             assertEquals(f0.g() * scale, value.g, 1e-9 * scale, "green, alpha " + alpha);
@@ -76,8 +76,8 @@ class CookTorranceExercise {
         BRDF glass = brdf(RGBColor.gray(0.04), 0.3);
         BRDF white = brdf(RGBColor.gray(1), 0.3);
         for (double theta : new double[] {0, 30, 60, 80, 89}) {
-            Vec3 wo = direction(theta, 0);
-            Vec3 wi = direction(theta, 180);
+            MutableVec3 wo = direction(theta, 0);
+            MutableVec3 wi = direction(theta, 180);
             double expected = 0.04 + 0.96 * Math.pow(1 - Math.cos(Math.toRadians(theta)), 5);
             assertEquals(expected, f(glass, wo, wi).g / f(white, wo, wi).g, 1e-9, "F at " + theta + " degrees");
         }
@@ -89,17 +89,17 @@ class CookTorranceExercise {
         for (int i = 0; i < 5000; i++) {
             BRDF brdf = brdf(new RGBColor(random.nextDouble(), random.nextDouble(), random.nextDouble()),
                              0.02 + 0.98 * random.nextDouble());
-            Vec3 wo = direction(Math.toDegrees(Math.acos(random.nextDouble())), 360 * random.nextDouble());
-            Vec3 wi = direction(Math.toDegrees(Math.acos(random.nextDouble())), 360 * random.nextDouble());
-            Rgb forth = f(brdf, wo, wi);
-            Rgb back = f(brdf, wi, wo);
+            MutableVec3 wo = direction(Math.toDegrees(Math.acos(random.nextDouble())), 360 * random.nextDouble());
+            MutableVec3 wi = direction(Math.toDegrees(Math.acos(random.nextDouble())), 360 * random.nextDouble());
+            MutableRgb forth = f(brdf, wo, wi);
+            MutableRgb back = f(brdf, wi, wo);
             assertTrue(forth.r >= 0 && forth.g >= 0 && forth.b >= 0 && Double.isFinite(forth.r + forth.g + forth.b),
                        "f must be finite and non-negative, got " + forth);
             assertEquals(forth.g, back.g, 1e-10 * (1 + forth.g), "f(wo, wi) = f(wi, wo)");
-            Vec3 below = new Vec3().set(wi.x, wi.y, -wi.z);
+            MutableVec3 below = new MutableVec3().set(wi.x, wi.y, -wi.z);
             assertTrue(f(brdf, wo, below).isBlack() && f(brdf, below, wo).isBlack(), "no light through the surface");
         }
-        Rgb grazing = f(brdf(RGBColor.WHITE, 0.1), direction(89.9999, 0), direction(89.9999, 180));
+        MutableRgb grazing = f(brdf(RGBColor.WHITE, 0.1), direction(89.9999, 0), direction(89.9999, 180));
         assertTrue(Double.isFinite(grazing.g) && grazing.g >= 0, "finite at grazing angles, got " + grazing);
     }
 
@@ -123,12 +123,12 @@ class CookTorranceExercise {
         BRDF brdf = brdf(RGBColor.WHITE, 0.3);
         SplittableRandom random = new SplittableRandom(3);
         for (double theta : new double[] {0, 50, 80}) {
-            Vec3 wo = direction(theta, 30);
+            MutableVec3 wo = direction(theta, 30);
             double sum = 0;
             double sumSquares = 0;
             int n = 200_000;
-            Vec3 wi = new Vec3();
-            Rgb weight = new Rgb();
+            MutableVec3 wi = new MutableVec3();
+            MutableRgb weight = new MutableRgb();
             for (int i = 0; i < n; i++) {
                 if (brdf.sampleF(sr, wo, random.nextDouble(), random.nextDouble(), wi, weight)) {
                     double pdf = brdf.pdf(sr, wo, wi);
@@ -149,11 +149,11 @@ class CookTorranceExercise {
     }
 
     /** The directional albedo, the integral of f cos(theta_i) over the hemisphere, by the midpoint rule in (cos(theta), phi). */
-    private double albedo(BRDF brdf, Vec3 wo) {
+    private double albedo(BRDF brdf, MutableVec3 wo) {
         int steps = 600;
         double sum = 0;
-        Vec3 wi = new Vec3();
-        Rgb out = new Rgb();
+        MutableVec3 wi = new MutableVec3();
+        MutableRgb out = new MutableRgb();
         for (int i = 0; i < steps; i++) {
             double mu = (i + 0.5) / steps;
             double sin = Math.sqrt(1 - mu * mu);

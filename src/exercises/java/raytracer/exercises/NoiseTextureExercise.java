@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * Exercise 8: a solid texture of gradient noise (Perlin 1985 and 2002; Suffern, chapter 31, builds
@@ -42,7 +42,7 @@ class NoiseTextureExercise {
     private double t(Texture texture, double x, double y, double z) {
         ShadeRec sr = scratch.surfacePoint(x + 17.25, y - 3.5, z + 8.125, 0, 1, 0);
         sr.localHitPoint.set(x, y, z);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         texture.getColor(sr, out);
         double t = (out.r - LOW.r()) / (HIGH.r() - LOW.r());
         assertEquals(LOW.g() + t * (HIGH.g() - LOW.g()), out.g, 1e-12, "the colour lies between low and high");

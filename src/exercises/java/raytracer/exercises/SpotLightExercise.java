@@ -14,8 +14,8 @@ import raytracer.core.ShadeRec;
 import raytracer.lights.PointLight;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -53,8 +53,8 @@ class SpotLightExercise {
         return scratch.surfacePoint(x, y, z, 0, 1, 0);
     }
 
-    private static Rgb radiance(Light light, ShadeRec sr) {
-        Rgb out = new Rgb();
+    private static MutableRgb radiance(Light light, ShadeRec sr) {
+        MutableRgb out = new MutableRgb();
         light.L(sr, out);
         return out;
     }
@@ -64,12 +64,12 @@ class SpotLightExercise {
         Light spot = spot(new Vector3D(0, -1, 0), 40, 25);
         Light point = new PointLight(30.0, COLOR, POSITION);
         SplittableRandom random = new SplittableRandom(9);
-        Vec3 fromSpot = new Vec3();
-        Vec3 fromPoint = new Vec3();
+        MutableVec3 fromSpot = new MutableVec3();
+        MutableVec3 fromPoint = new MutableVec3();
         for (int i = 0; i < 1000; i++) {
             ShadeRec sr = pointAt(25 * random.nextDouble(), 360 * random.nextDouble(), 0.1 + 10 * random.nextDouble());
-            Rgb expected = radiance(point, sr);
-            Rgb got = radiance(spot, sr);
+            MutableRgb expected = radiance(point, sr);
+            MutableRgb got = radiance(spot, sr);
             assertEquals(expected.r, got.r, 1e-12 * expected.r, "red");
             assertEquals(expected.b, got.b, 1e-12 * expected.b, "blue");
             double d = spot.getDirection(sr, fromSpot);

@@ -22,7 +22,7 @@ import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.io.scene.SceneLoader;
 import raytracer.math.Ray;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * The rays of a benchmark frame (scenes/bench-*.yaml, 1 sample per pixel, two point lights),
@@ -62,7 +62,7 @@ public class FrameRaysBenchmark {
         primary = new double[6 * width * height];
         shadow = new double[7 * 2 * width * height];
         Ray shadowRay = new Ray();
-        Vec3 wi = sr.wi;
+        MutableVec3 wi = sr.wi;
         // box tests by kind of ray: primary to the mesh or elsewhere, shadow from the mesh or elsewhere
         long[] rays = new long[4];
         long[] tests = new long[4];

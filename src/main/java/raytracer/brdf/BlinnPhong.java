@@ -3,8 +3,8 @@ package raytracer.brdf;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * The normalised Blinn-Phong lobe around the half vector, as Ngan et al. fit it (docs/brdf-params.md):
@@ -23,11 +23,11 @@ public final class BlinnPhong implements BRDF {
     }
 
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
         out.set(rhoS).scale(value(sr.normal, wo, wi));
     }
 
-    double value(Vec3 n, Vec3 wo, Vec3 wi) {
+    double value(MutableVec3 n, MutableVec3 wo, MutableVec3 wi) {
         if (n.dot(wi) <= 0 || n.dot(wo) <= 0) {
             return 0;
         }
@@ -36,7 +36,7 @@ public final class BlinnPhong implements BRDF {
     }
 
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 }

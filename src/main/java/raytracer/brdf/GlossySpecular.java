@@ -3,9 +3,9 @@ package raytracer.brdf;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.SampleMapping;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * Phong's specular lobe (report eq. 1, Suffern section 15.3): f = ks cs cos^e(alpha), alpha between
@@ -25,8 +25,8 @@ public final class GlossySpecular implements BRDF {
     }
 
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
-        Vec3 n = sr.normal;
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
+        MutableVec3 n = sr.normal;
         double nDotWi = n.dot(wi);
         // r = -wi + 2 (n . wi) n
         double rx = -wi.x + 2 * nDotWi * n.x;
@@ -48,8 +48,8 @@ public final class GlossySpecular implements BRDF {
      * surface gives false and a black weight, and still counts as a sample (docs/brdf-params.md).
      */
     @Override
-    public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
-        Vec3 n = sr.normal;
+    public boolean sampleF(ShadeRec sr, MutableVec3 wo, double u, double v, MutableVec3 wi, MutableRgb weight) {
+        MutableVec3 n = sr.normal;
         double nDotWo = n.dot(wo);
         // r = -wo + 2 (n . wo) n
         double rx = -wo.x + 2 * nDotWo * n.x;
@@ -68,8 +68,8 @@ public final class GlossySpecular implements BRDF {
 
     /** The density of {@link #sampleF} for wi, over solid angle: (e + 1) / (2 pi) cos^e(alpha). */
     @Override
-    public double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
-        Vec3 n = sr.normal;
+    public double pdf(ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
+        MutableVec3 n = sr.normal;
         double nDotWo = n.dot(wo);
         double rDotWi = (-wo.x + 2 * nDotWo * n.x) * wi.x + (-wo.y + 2 * nDotWo * n.y) * wi.y + (-wo.z + 2 * nDotWo * n.z) * wi.z;
         return SampleMapping.hemispherePdf(rDotWi, exp);
@@ -77,7 +77,7 @@ public final class GlossySpecular implements BRDF {
 
     /** A lobe this narrow has no meaningful ambient response; Suffern returns black too. */
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 }

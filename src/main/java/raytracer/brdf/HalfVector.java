@@ -1,6 +1,6 @@
 package raytracer.brdf;
 
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /** The half vector's cosine with the normal, cos(theta_h), shared by the microfacet-style lobes. */
 final class HalfVector {
@@ -8,7 +8,7 @@ final class HalfVector {
     }
 
     /** cos(theta_h) for H = normalize(wi + wo), or -1 when wi = -wo (no half vector). */
-    static double cosThetaH(Vec3 n, Vec3 wi, Vec3 wo) {
+    static double cosThetaH(MutableVec3 n, MutableVec3 wi, MutableVec3 wo) {
         double hx = wi.x + wo.x;
         double hy = wi.y + wo.y;
         double hz = wi.z + wo.z;

@@ -4,8 +4,8 @@ import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Perfect diffuse reflection: f = kd cd / pi, rho = kd cd (Suffern, section 13.9); with a texture,
@@ -29,16 +29,16 @@ public final class Lambertian implements BRDF {
     }
 
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
         color(sr, out).scale(kd / Math.PI);
     }
 
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         color(sr, out).scale(kd);
     }
 
-    private Rgb color(ShadeRec sr, Rgb out) {
+    private MutableRgb color(ShadeRec sr, MutableRgb out) {
         if (texture == null) {
             return out.set(cd);
         }

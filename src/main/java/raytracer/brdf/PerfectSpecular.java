@@ -3,8 +3,8 @@ package raytracer.brdf;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * A perfect mirror (Suffern, section 24.2): all reflected light leaves along the mirror direction
@@ -21,14 +21,14 @@ public final class PerfectSpecular implements BRDF {
 
     /** Zero: no finite direction-to-direction value exists for a delta. */
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
         out.setBlack();
     }
 
     /** Writes the mirror direction of {@code wo} about the shading normal into {@code wi}, weight kr cr; (u, v) is unused. */
     @Override
-    public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
-        Vec3 n = sr.normal;
+    public boolean sampleF(ShadeRec sr, MutableVec3 wo, double u, double v, MutableVec3 wi, MutableRgb weight) {
+        MutableVec3 n = sr.normal;
         double nDotWo = n.dot(wo);
         wi.set(-wo.x + 2 * nDotWo * n.x, -wo.y + 2 * nDotWo * n.y, -wo.z + 2 * nDotWo * n.z);
         weight.set(reflectance);
@@ -37,13 +37,13 @@ public final class PerfectSpecular implements BRDF {
 
     /** Zero: the chance of picking any given direction other than by {@link #sampleF} is nil. */
     @Override
-    public double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
+    public double pdf(ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
         return 0;
     }
 
     /** Zero, as in the book: ambient light is not mirrored. */
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 }

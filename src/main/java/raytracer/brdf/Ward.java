@@ -3,8 +3,8 @@ package raytracer.brdf;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * The isotropic Ward lobe (Ward 1992), in the form fitted by Ngan, Durand and Matusik 2005
@@ -27,12 +27,12 @@ public final class Ward implements BRDF {
     }
 
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
         out.set(rhoS).scale(value(sr.normal, wo, wi));
     }
 
     /** The scalar part of f_s for unit vectors (rho_s aside). */
-    double value(Vec3 n, Vec3 wo, Vec3 wi) {
+    double value(MutableVec3 n, MutableVec3 wo, MutableVec3 wi) {
         double cosI = n.dot(wi);
         double cosO = n.dot(wo);
         double cosH = HalfVector.cosThetaH(n, wi, wo);
@@ -46,7 +46,7 @@ public final class Ward implements BRDF {
     }
 
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 }

@@ -3,8 +3,8 @@ package raytracer.btdf;
 import raytracer.core.BTDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.Fresnel;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Refraction by Snell's law at a smooth boundary between the outside (index 1) and a medium of
@@ -30,7 +30,7 @@ public final class PerfectTransmitter implements BTDF {
 
     /** Zero: a delta is sampled, never evaluated. */
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb out) {
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wt, MutableRgb out) {
         out.setBlack();
     }
 
@@ -40,8 +40,8 @@ public final class PerfectTransmitter implements BTDF {
      * channel; false past the critical angle, where sin(theta_t) would exceed 1.
      */
     @Override
-    public boolean sampleF(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb weight) {
-        Vec3 n = sr.normal;
+    public boolean sampleF(ShadeRec sr, MutableVec3 wo, MutableVec3 wt, MutableRgb weight) {
+        MutableVec3 n = sr.normal;
         double eta = relativeEta(sr);
         double cosI = n.dot(wo);
         double sin2T = eta * eta * Math.max(0, 1 - cosI * cosI);
@@ -59,7 +59,7 @@ public final class PerfectTransmitter implements BTDF {
 
     /** Zero, as a perfect transmitter has no diffuse part for ambient light to cross. */
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 

@@ -1,8 +1,8 @@
 package raytracer.core;
 
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.SampleMapping;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * A bidirectional reflectance distribution function (Suffern, chapter 13): how much of the light
@@ -12,7 +12,7 @@ import raytracer.math.Vec3;
 public interface BRDF {
 
     /** Writes f(wo, wi) at the hit into {@code out}. */
-    void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out);
+    void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out);
 
     /**
      * Suffern's sample_f (chapters 24 and 25): picks a direction wi for the sample (u, v) in
@@ -30,8 +30,8 @@ public interface BRDF {
      * the book samples Lambertian reflection so (chapter 26). Lambertian, Ward and Blinn-Phong use
      * it; the lobes that trace rays (mirror, Phong) sample their own shape.
      */
-    default boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
-        Vec3 n = sr.normal;
+    default boolean sampleF(ShadeRec sr, MutableVec3 wo, double u, double v, MutableVec3 wi, MutableRgb weight) {
+        MutableVec3 n = sr.normal;
         SampleMapping.toHemisphere(u, v, 1, n.x, n.y, n.z, wi);
         if (!(n.dot(wi) > 0)) {
             weight.setBlack();
@@ -47,10 +47,10 @@ public interface BRDF {
      * of a delta distribution (a mirror), whose weight {@link #sampleF} gives instead. The default
      * is that of cosine sampling, cos(theta_i) / pi.
      */
-    default double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
+    default double pdf(ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
         return SampleMapping.hemispherePdf(sr.normal.dot(wi), 1);
     }
 
     /** Writes the bihemispherical reflectance rho, used for ambient light, into {@code out}. */
-    void rho(ShadeRec sr, Vec3 wo, Rgb out);
+    void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out);
 }

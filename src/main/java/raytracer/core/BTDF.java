@@ -1,7 +1,7 @@
 package raytracer.core;
 
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * A bidirectional transmittance distribution function (Suffern, chapter 27): how much of the light
@@ -11,7 +11,7 @@ import raytracer.math.Vec3;
 public interface BTDF {
 
     /** Writes f_t(wo, wt) into {@code out}; zero for a perfect transmitter, whose delta is sampled, never evaluated. */
-    void f(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb out);
+    void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wt, MutableRgb out);
 
     /**
      * Suffern's sample_f (chapter 27): writes into {@code wt} a direction through the surface for
@@ -19,8 +19,8 @@ public interface BTDF {
      * f_t cos(theta_t) / pdf, by which the radiance arriving along wt is multiplied. Returns false,
      * with a black weight, when no light crosses (total internal reflection: the book's tir).
      */
-    boolean sampleF(ShadeRec sr, Vec3 wo, Vec3 wt, Rgb weight);
+    boolean sampleF(ShadeRec sr, MutableVec3 wo, MutableVec3 wt, MutableRgb weight);
 
     /** Writes the hemispherical transmittance rho into {@code out}; zero for a perfect transmitter, as in the book. */
-    void rho(ShadeRec sr, Vec3 wo, Rgb out);
+    void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out);
 }

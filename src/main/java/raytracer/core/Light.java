@@ -1,8 +1,8 @@
 package raytracer.core;
 
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /** A light source (Suffern, chapter 14). */
 public abstract class Light {
@@ -12,10 +12,10 @@ public abstract class Light {
      * Writes the unit direction from the hit towards the light into {@code wi} and returns the
      * distance to the light (infinite for a directional light).
      */
-    public abstract double getDirection(ShadeRec sr, Vec3 wi);
+    public abstract double getDirection(ShadeRec sr, MutableVec3 wi);
 
     /** Writes the incident radiance (or, for point lights, the irradiance factor I / r^2) into {@code out}. */
-    public abstract void L(ShadeRec sr, Rgb out);
+    public abstract void L(ShadeRec sr, MutableRgb out);
 
     /**
      * False when the light cannot reach the hit at all (behind it, or below its tangent plane), so
@@ -56,7 +56,7 @@ public abstract class Light {
      * unit direction towards it into {@code wi}; returns the distance. Lights without extent ignore
      * the sample.
      */
-    public double sample(ShadeRec sr, double u, double v, Vec3 wi) {
+    public double sample(ShadeRec sr, double u, double v, MutableVec3 wi) {
         return getDirection(sr, wi);
     }
 

@@ -1,6 +1,6 @@
 package raytracer.core;
 
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * How a surface answers light (Suffern, chapter 14): the radiance leaving a completed hit towards
@@ -12,7 +12,7 @@ public abstract class Material {
      * Suffern's shade (chapters 14 and 24), called by the RayCast and Whitted tracers: writes into
      * {@code out} the radiance leaving the hit {@code sr}, each light taken from its one direction.
      */
-    public abstract void shade(ShadeRec sr, Rgb out);
+    public abstract void shade(ShadeRec sr, MutableRgb out);
 
     /**
      * Suffern's area_light_shade (chapter 18), called by the AreaLighting tracer: as {@link #shade},
@@ -20,5 +20,5 @@ public abstract class Material {
      * which lights with extent need. Secondary rays are traced through the same tracer, so they
      * are shaded this way too.
      */
-    public abstract void areaLightShade(ShadeRec sr, Rgb out);
+    public abstract void areaLightShade(ShadeRec sr, MutableRgb out);
 }

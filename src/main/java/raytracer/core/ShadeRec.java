@@ -1,7 +1,7 @@
 package raytracer.core;
 
 import raytracer.math.Ray;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * The hit record (Suffern, section 3.5), mutable and reused: one per recursion depth per worker.
@@ -36,15 +36,15 @@ public final class ShadeRec {
 
     // ---- completed for the winner ----
     /** World-space hit point (object space while a leaf's completeHit runs). */
-    public final Vec3 hitPoint = new Vec3();
+    public final MutableVec3 hitPoint = new MutableVec3();
     /** The hit point in the leaf's own coordinates, for textures. */
-    public final Vec3 localHitPoint = new Vec3();
+    public final MutableVec3 localHitPoint = new MutableVec3();
     /** Unit shading normal, turned to face the incoming ray. */
-    public final Vec3 normal = new Vec3();
+    public final MutableVec3 normal = new MutableVec3();
     /** Unit geometric normal, on the same side as {@link #normal}. */
-    public final Vec3 geometricNormal = new Vec3();
+    public final MutableVec3 geometricNormal = new MutableVec3();
     /** Per-axis bound on the rounding error of {@link #hitPoint} (pbrt-v3, section 3.9). */
-    public final Vec3 hitError = new Vec3();
+    public final MutableVec3 hitError = new MutableVec3();
     /** True when the ray arrived from the side the geometric normal pointed to before flipping. */
     public boolean frontFace;
     public double u;
@@ -58,11 +58,11 @@ public final class ShadeRec {
     public final World world;
     public final WorkerScratch scratch;
     /** Shading scratch: unit direction to the viewer and to the light. */
-    public final Vec3 wo = new Vec3();
-    public final Vec3 wi = new Vec3();
+    public final MutableVec3 wo = new MutableVec3();
+    public final MutableVec3 wi = new MutableVec3();
     /** The point and unit normal of the last area-light sample. */
-    public final Vec3 lightPoint = new Vec3();
-    public final Vec3 lightNormal = new Vec3();
+    public final MutableVec3 lightPoint = new MutableVec3();
+    public final MutableVec3 lightNormal = new MutableVec3();
 
     public ShadeRec(World world, WorkerScratch scratch) {
         this.world = world;
@@ -147,7 +147,7 @@ public final class ShadeRec {
      * (pbrt-v3, section 3.9.5). The offset scales with the scene, so there is no epsilon to tune.
      */
     public Ray spawnRay(double dx, double dy, double dz, Ray out) {
-        Vec3 n = geometricNormal;
+        MutableVec3 n = geometricNormal;
         double d = Math.abs(n.x) * hitError.x + Math.abs(n.y) * hitError.y + Math.abs(n.z) * hitError.z;
         if (n.dot(dx, dy, dz) < 0) {
             d = -d;

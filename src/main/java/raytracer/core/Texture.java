@@ -1,10 +1,10 @@
 package raytracer.core;
 
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** A colour that varies over a surface (Suffern, chapter 29): looked up from the completed hit. */
 public interface Texture {
 
     /** Writes the texture's linear colour at the hit (its u, v or local hit point) into {@code out}. */
-    void getColor(ShadeRec sr, Rgb out);
+    void getColor(ShadeRec sr, MutableRgb out);
 }

@@ -1,11 +1,11 @@
 package raytracer.core;
 
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** Follows one ray into the world and returns the radiance along it (Suffern, chapter 3). */
 public interface Tracer {
 
     /** Writes the radiance arriving along {@code ray} at recursion {@code depth} into {@code out}. */
-    void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out);
+    void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out);
 }

@@ -1,10 +1,10 @@
 package raytracer.core;
 
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Rng;
 import raytracer.math.ShearedRay;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
@@ -15,19 +15,19 @@ import raytracer.math.Vec3;
 public final class WorkerScratch {
     private final ShadeRec[] shadeRecs;
     private final Ray[] rays;
-    private final Rgb[] colors;
-    private final Rgb[] weights;
+    private final MutableRgb[] colors;
+    private final MutableRgb[] weights;
     public final Ray shadowRay = new Ray();
     /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
     public final TraversalStack traversals = new TraversalStack();
     /** The watertight triangle test's constants for the ray whose triangles are being tested. */
     public final ShearedRay shearedRay = new ShearedRay();
     /** Colour scratch for one light's incident radiance and the BRDF values that meet it. */
-    public final Rgb lightScratch = new Rgb();
-    public final Rgb brdfScratch = new Rgb();
-    public final Rgb specularScratch = new Rgb();
+    public final MutableRgb lightScratch = new MutableRgb();
+    public final MutableRgb brdfScratch = new MutableRgb();
+    public final MutableRgb specularScratch = new MutableRgb();
     public final Rng rng = new Rng(0);
-    public final Vec3 diskScratch = new Vec3();
+    public final MutableVec3 diskScratch = new MutableVec3();
     public final double[] sampleX;
     public final double[] sampleY;
     public final double[] lensX;
@@ -54,13 +54,13 @@ public final class WorkerScratch {
         int levels = world.viewPlane().maxDepth() + 2;
         shadeRecs = new ShadeRec[levels];
         rays = new Ray[levels];
-        colors = new Rgb[levels];
-        weights = new Rgb[levels];
+        colors = new MutableRgb[levels];
+        weights = new MutableRgb[levels];
         for (int i = 0; i < levels; i++) {
             shadeRecs[i] = new ShadeRec(world, this);
             rays[i] = new Ray();
-            colors[i] = new Rgb();
-            weights[i] = new Rgb();
+            colors[i] = new MutableRgb();
+            weights[i] = new MutableRgb();
         }
         int n = world.viewPlane().numSamples();
         sampleX = new double[n];
@@ -134,7 +134,7 @@ public final class WorkerScratch {
     }
 
     /** The colour slot for radiance returned from {@code depth}. */
-    public Rgb color(int depth) {
+    public MutableRgb color(int depth) {
         return colors[depth];
     }
 
@@ -142,7 +142,7 @@ public final class WorkerScratch {
      * The colour slot for the weight of a direction sampled by a material at {@code depth} (a
      * BRDF's or BTDF's sampleF): one per depth, as it is still needed when the traced ray returns.
      */
-    public Rgb weight(int depth) {
+    public MutableRgb weight(int depth) {
         return weights[depth];
     }
 }

@@ -3,8 +3,8 @@ package raytracer.lights;
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /** Constant light from everywhere, L = ls c (Suffern, section 14.3); it has no direction. */
 public final class Ambient extends Light {
@@ -16,13 +16,13 @@ public final class Ambient extends Light {
     }
 
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         wi.set(0, 0, 0);
         return 0;
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }
 }

@@ -4,8 +4,8 @@ import raytracer.core.Light;
 import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * An area light (Suffern, chapter 18): radiance Le leaves one side of a surface. Each shaded point
@@ -74,7 +74,7 @@ public final class AreaLight extends Light {
 
     /** Samples the emitter: the point and its normal are kept in {@code sr} for {@link #G}. */
     @Override
-    public double sample(ShadeRec sr, double u, double v, Vec3 wi) {
+    public double sample(ShadeRec sr, double u, double v, MutableVec3 wi) {
         emitter.sample(u, v, sr.lightPoint, sr.lightNormal);
         wi.set(sr.lightPoint.x - sr.hitPoint.x, sr.lightPoint.y - sr.hitPoint.y, sr.lightPoint.z - sr.hitPoint.z);
         double distance = wi.length();
@@ -88,7 +88,7 @@ public final class AreaLight extends Light {
      * tracer calls (the scene loader chooses that tracer for scenes with area lights).
      */
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         throw new IllegalStateException("an area light is sampled, not seen from one direction: render with the "
                                         + "AreaLighting tracer (Suffern, chapter 18)");
     }
@@ -111,7 +111,7 @@ public final class AreaLight extends Light {
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }
 }

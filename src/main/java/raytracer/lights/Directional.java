@@ -3,8 +3,8 @@ package raytracer.lights;
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /** Light from one direction with no falloff, L = ls c (Suffern, section 14.4.1); the sun. */
@@ -22,13 +22,13 @@ public final class Directional extends Light {
     }
 
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         wi.set(towardLight.x(), towardLight.y(), towardLight.z());
         return Double.POSITIVE_INFINITY;
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }
 }

@@ -2,7 +2,7 @@ package raytracer.lights;
 
 import raytracer.math.Point3D;
 import raytracer.math.SampleMapping;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /** A disk emitting on the side its normal points to; sampled through the concentric map. */
@@ -26,7 +26,7 @@ final class DiskEmitter implements Emitter {
     }
 
     @Override
-    public void sample(double u, double v, Vec3 point, Vec3 n) {
+    public void sample(double u, double v, MutableVec3 point, MutableVec3 n) {
         // the point's disk coordinates go through n first, which is overwritten right after
         SampleMapping.toUnitDisk(u, v, n);
         double x = n.x * radius;
@@ -37,7 +37,7 @@ final class DiskEmitter implements Emitter {
     }
 
     @Override
-    public boolean mayLight(Vec3 p, Vec3 n) {
+    public boolean mayLight(MutableVec3 p, MutableVec3 n) {
         double cx = center.x() - p.x;
         double cy = center.y() - p.y;
         double cz = center.z() - p.z;

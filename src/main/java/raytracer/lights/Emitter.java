@@ -1,12 +1,12 @@
 package raytracer.lights;
 
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /** The surface of an area light, sampled uniformly by area. */
 interface Emitter {
 
     /** Writes the point for (u, v) in [0,1)^2 and the unit normal on its emitting side. */
-    void sample(double u, double v, Vec3 point, Vec3 normal);
+    void sample(double u, double v, MutableVec3 point, MutableVec3 normal);
 
     double area();
 
@@ -15,5 +15,5 @@ interface Emitter {
      * normal {@code n}: p is behind the emitting side, or the whole emitter lies below p's tangent
      * plane. Conservative: true may still mean that every sample weighs nothing.
      */
-    boolean mayLight(Vec3 p, Vec3 n);
+    boolean mayLight(MutableVec3 p, MutableVec3 n);
 }

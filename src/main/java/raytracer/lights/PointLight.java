@@ -4,8 +4,8 @@ import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * A point light of intensity I = ls c: it gives irradiance I cos(theta) / r^2 (SPEC section 2), so
@@ -25,7 +25,7 @@ public final class PointLight extends Light {
     }
 
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         wi.set(px - sr.hitPoint.x, py - sr.hitPoint.y, pz - sr.hitPoint.z);
         double distance = wi.length();
         wi.set(wi.x / distance, wi.y / distance, wi.z / distance);
@@ -33,7 +33,7 @@ public final class PointLight extends Light {
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         double dx = px - sr.hitPoint.x;
         double dy = py - sr.hitPoint.y;
         double dz = pz - sr.hitPoint.z;

@@ -1,7 +1,7 @@
 package raytracer.lights;
 
 import raytracer.math.Point3D;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /** A parallelogram corner + u a + v b; it emits on the side of a x b. */
@@ -25,13 +25,13 @@ final class RectangleEmitter implements Emitter {
     }
 
     @Override
-    public void sample(double u, double v, Vec3 point, Vec3 n) {
+    public void sample(double u, double v, MutableVec3 point, MutableVec3 n) {
         point.set(corner.x() + u * a.x() + v * b.x(), corner.y() + u * a.y() + v * b.y(), corner.z() + u * a.z() + v * b.z());
         n.set(normal.x(), normal.y(), normal.z());
     }
 
     @Override
-    public boolean mayLight(Vec3 p, Vec3 n) {
+    public boolean mayLight(MutableVec3 p, MutableVec3 n) {
         double cx = corner.x() - p.x;
         double cy = corner.y() - p.y;
         double cz = corner.z() - p.z;

@@ -1,7 +1,7 @@
 package raytracer.lights;
 
 import raytracer.math.Point3D;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * A sphere emitting outward, sampled uniformly over its whole area (z = 1 - 2u, phi = 2 pi v):
@@ -21,7 +21,7 @@ final class SphereEmitter implements Emitter {
     }
 
     @Override
-    public void sample(double u, double v, Vec3 point, Vec3 n) {
+    public void sample(double u, double v, MutableVec3 point, MutableVec3 n) {
         double z = 1 - 2 * u;
         double r = Math.sqrt(Math.max(0, 1 - z * z));
         double phi = 2 * Math.PI * v;
@@ -30,7 +30,7 @@ final class SphereEmitter implements Emitter {
     }
 
     @Override
-    public boolean mayLight(Vec3 p, Vec3 n) {
+    public boolean mayLight(MutableVec3 p, MutableVec3 n) {
         return n.x * (center.x() - p.x) + n.y * (center.y() - p.y) + n.z * (center.z() - p.z) + radius > 0;
     }
 

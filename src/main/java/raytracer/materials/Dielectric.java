@@ -12,8 +12,8 @@ import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Glass (report section 3; Suffern, chapter 28; area lights: chapter 18): the exact Fresnel
@@ -43,7 +43,7 @@ public final class Dielectric extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         if (!seenFromInside(sr, out)) {
             lighting.shade(sr, out);
         }
@@ -51,7 +51,7 @@ public final class Dielectric extends Material {
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         if (!seenFromInside(sr, out)) {
             lighting.areaLightShade(sr, out);
         }
@@ -63,7 +63,7 @@ public final class Dielectric extends Material {
      * which casts shadows: every shadow ray would be blocked, so none is traced and the direct
      * light is black (glass has no diffuse or ambient term, so nothing else is lost). Sets sr.wo.
      */
-    private static boolean seenFromInside(ShadeRec sr, Rgb out) {
+    private static boolean seenFromInside(ShadeRec sr, MutableRgb out) {
         if (sr.frontFace || !sr.object.castsShadows()) {
             return false;
         }
@@ -76,7 +76,7 @@ public final class Dielectric extends Material {
      * Adds the refracted ray's radiance weighted 1 - R and the mirror ray's weighted R (Suffern,
      * chapter 28), then applies Beer's law to the whole when the hit ends a segment inside.
      */
-    private void transmitAndReflect(ShadeRec sr, Rgb out) {
+    private void transmitAndReflect(ShadeRec sr, MutableRgb out) {
         WorkerScratch scratch = sr.scratch;
         RayTreePolicy policy = scratch.policy;
         // Beer's law: a hit seen from inside ends a segment of length t through the medium
@@ -88,13 +88,13 @@ public final class Dielectric extends Material {
         if (next <= sr.world.viewPlane().maxDepth()) {
             double cosI = sr.normal.dot(sr.wo);
             double eta = transmitter.relativeEta(sr);
-            Vec3 wi = sr.wi;
-            Rgb weight = scratch.weight(sr.depth);
+            MutableVec3 wi = sr.wi;
+            MutableRgb weight = scratch.weight(sr.depth);
             boolean refracts = transmitter.sampleF(sr, sr.wo, wi, weight);
             // the ablation without angle dependence: all refracted, nothing reflected (but for TIR)
             double r = !refracts ? 1 : policy.angleDependent() ? Fresnel.dielectric(cosI, 1, 1 / eta) : 0;
             double t = !refracts ? 0 : policy.angleDependent() ? weight.r : 1; // = 1 - r
-            Rgb incoming = scratch.color(next);
+            MutableRgb incoming = scratch.color(next);
             // the refracted part (wi holds its direction); the branch's weight includes the
             // transmittance of the segment that ended here
             if (r < 1 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t * tr, t * tg, t * tb)) {
@@ -115,7 +115,7 @@ public final class Dielectric extends Material {
         }
     }
 
-    private static void trace(ShadeRec sr, Vec3 direction, int depth, WorkerScratch scratch, Rgb out, Background environment) {
+    private static void trace(ShadeRec sr, MutableVec3 direction, int depth, WorkerScratch scratch, MutableRgb out, Background environment) {
         Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
         scratch.secondaryRays++;
         scratch.setEnvironment(depth, environment);

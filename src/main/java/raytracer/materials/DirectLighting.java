@@ -6,8 +6,8 @@ import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
 import raytracer.core.WorkerScratch;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * The direct light of a lit material, ambient plus a diffuse and an optional specular lobe, in the
@@ -53,7 +53,7 @@ final class DirectLighting {
     }
 
     /** Suffern's shade: writes into {@code out} the ambient term plus each light's, from its one direction. */
-    void shade(ShadeRec sr, Rgb out) {
+    void shade(ShadeRec sr, MutableRgb out) {
         if (!ambient(sr, out)) {
             return;
         }
@@ -66,12 +66,12 @@ final class DirectLighting {
      * Suffern's area_light_shade: writes into {@code out} the ambient term plus, for each light, the
      * average over its samples of f L G cos(theta_i) / pdf (one sample for lights without extent).
      */
-    void areaLightShade(ShadeRec sr, Rgb out) {
+    void areaLightShade(ShadeRec sr, MutableRgb out) {
         if (!ambient(sr, out)) {
             return;
         }
         WorkerScratch scratch = sr.scratch;
-        Vec3 wi = sr.wi;
+        MutableVec3 wi = sr.wi;
         for (Light light : sr.world.lights()) {
             if (!light.mayIlluminate(sr)) {
                 continue; // every sample would weigh nothing: draw none
@@ -92,15 +92,15 @@ final class DirectLighting {
      * Sets sr.wo and writes the ambient term rho_a La into {@code out}; false, with {@code out}
      * black, when the pass hides this hit's direct light.
      */
-    private boolean ambient(ShadeRec sr, Rgb out) {
+    private boolean ambient(ShadeRec sr, MutableRgb out) {
         WorkerScratch scratch = sr.scratch;
-        Vec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+        MutableVec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
         if (!scratch.policy.showsDirect(sr.depth)) {
             out.setBlack();
             return false;
         }
-        Rgb f = scratch.brdfScratch;
-        Rgb incident = scratch.lightScratch;
+        MutableRgb f = scratch.brdfScratch;
+        MutableRgb incident = scratch.lightScratch;
         ambient.rho(sr, wo, f);
         sr.world.ambient().L(sr, incident);
         out.setBlack().addProduct(f, incident, 1);
@@ -113,16 +113,16 @@ final class DirectLighting {
      * it could not change the pixel by the cutoff (Hall and Greenberg 1983), the shadow ray is not
      * traced and the sample is left out.
      */
-    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, Rgb out) {
+    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, MutableRgb out) {
         WorkerScratch scratch = sr.scratch;
-        Vec3 wi = sr.wi;
+        MutableVec3 wi = sr.wi;
         double nDotWi = sr.normal.dot(wi);
         // the geometric normal decides which side the light is on, so bumped normals do not leak
         if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
             return;
         }
-        Rgb f = scratch.brdfScratch;
-        Rgb incident = scratch.lightScratch;
+        MutableRgb f = scratch.brdfScratch;
+        MutableRgb incident = scratch.lightScratch;
         diffuse.f(sr, sr.wo, wi, f);
         light.L(sr, incident);
         if (terms == Terms.REPORT) {
@@ -148,9 +148,9 @@ final class DirectLighting {
         out.addProduct(f, incident, g * weight);
     }
 
-    private static void addLobe(ShadeRec sr, BRDF lobe, Rgb f) {
+    private static void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f) {
         if (lobe != null) {
-            Rgb fs = sr.scratch.specularScratch;
+            MutableRgb fs = sr.scratch.specularScratch;
             lobe.f(sr, sr.wo, sr.wi, fs);
             f.add(fs);
         }

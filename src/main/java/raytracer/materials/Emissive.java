@@ -3,7 +3,7 @@ package raytracer.materials;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * A surface that emits radiance ls c from its front side (Suffern, section 18.3): the visible
@@ -17,7 +17,7 @@ public final class Emissive extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         if (sr.frontFace) {
             out.set(radiance);
         } else {
@@ -27,7 +27,7 @@ public final class Emissive extends Material {
 
     /** The same: what an emitter shows does not depend on how the lights are sampled. */
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         shade(sr, out);
     }
 }

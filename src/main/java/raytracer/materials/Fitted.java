@@ -6,7 +6,7 @@ import raytracer.core.BRDF;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * A measured material as a fitted model (report section 2.2, figure 2): Lambertian rho_d / pi plus
@@ -28,12 +28,12 @@ public final class Fitted extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
     }
 }

@@ -10,8 +10,8 @@ import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Glossy Phong (report section 2.1, figure 1b; Suffern, chapter 25): the diffuse part is lit
@@ -48,13 +48,13 @@ public final class GlossyReflector extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
         reflectGlossy(sr, out);
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
         reflectGlossy(sr, out);
     }
@@ -63,7 +63,7 @@ public final class GlossyReflector extends Material {
      * Adds the average over the glossy rays of the radiance each brings back times its weight
      * f cos(theta_i) / pdf (Suffern, chapter 25).
      */
-    private void reflectGlossy(ShadeRec sr, Rgb out) {
+    private void reflectGlossy(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
         WorkerScratch scratch = sr.scratch;
         if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {
@@ -74,9 +74,9 @@ public final class GlossyReflector extends Material {
         double[] xs = scratch.patternX(sr.depth, n);
         double[] ys = scratch.patternY(sr.depth);
         sampler.generate(n, scratch.rng, xs, ys);
-        Vec3 wi = sr.wi;
-        Rgb weight = scratch.weight(sr.depth);
-        Rgb incoming = scratch.color(next);
+        MutableVec3 wi = sr.wi;
+        MutableRgb weight = scratch.weight(sr.depth);
+        MutableRgb incoming = scratch.color(next);
         double r = 0;
         double g = 0;
         double b = 0;

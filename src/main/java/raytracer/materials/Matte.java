@@ -5,7 +5,7 @@ import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** A purely diffuse surface (Suffern, section 14.7; area lights: chapter 18): ambient ka cd plus Lambertian kd cd / pi. */
 public final class Matte extends Material {
@@ -25,12 +25,12 @@ public final class Matte extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
     }
 }

@@ -6,7 +6,7 @@ import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18). */
 public final class Phong extends Material {
@@ -28,12 +28,12 @@ public final class Phong extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
     }
 }

@@ -12,7 +12,7 @@ import raytracer.core.WorkerScratch;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * Phong shading plus a perfect mirror term (Suffern, section 24.3; area lights: chapter 18): the
@@ -49,26 +49,26 @@ public final class Reflective extends Material {
     }
 
     @Override
-    public void shade(ShadeRec sr, Rgb out) {
+    public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
         reflect(sr, out);
     }
 
     @Override
-    public void areaLightShade(ShadeRec sr, Rgb out) {
+    public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
         reflect(sr, out);
     }
 
     /** Adds the radiance along the mirror direction, times the mirror's weight and the Fresnel fraction. */
-    private void reflect(ShadeRec sr, Rgb out) {
+    private void reflect(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
         WorkerScratch scratch = sr.scratch;
         RayTreePolicy policy = scratch.policy;
         if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
             return;
         }
-        Rgb weight = scratch.weight(sr.depth);
+        MutableRgb weight = scratch.weight(sr.depth);
         mirror.sampleF(sr, sr.wo, 0, 0, sr.wi, weight);
         double fraction = schlick && policy.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
         if (!policy.recordBranchWeight(sr.depth, weight.r * fraction, weight.g * fraction, weight.b * fraction)) {
@@ -77,7 +77,7 @@ public final class Reflective extends Material {
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
         scratch.secondaryRays++;
         scratch.setEnvironment(next, policy.reflectedEnvironment(sr.depth, reflectionMap));
-        Rgb incoming = scratch.color(next);
+        MutableRgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
         out.addProduct(incoming, weight, fraction);
     }

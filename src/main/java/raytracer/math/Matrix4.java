@@ -116,14 +116,14 @@ public final class Matrix4 {
     }
 
     /** Applies this matrix to the point {@code p} in place. */
-    public void transformPoint(Vec3 p) {
+    public void transformPoint(MutableVec3 p) {
         p.set(m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3],
               m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
               m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]);
     }
 
     /** Applies this matrix to the vector {@code v} in place (no translation). */
-    public void transformVector(Vec3 v) {
+    public void transformVector(MutableVec3 v) {
         v.set(m[0] * v.x + m[1] * v.y + m[2] * v.z,
               m[4] * v.x + m[5] * v.y + m[6] * v.z,
               m[8] * v.x + m[9] * v.y + m[10] * v.z);
@@ -133,7 +133,7 @@ public final class Matrix4 {
      * Transforms a normal in place when this matrix is the <em>inverse</em> of the object's transform:
      * n' = (M^-1)^T n, so the columns of this matrix are used as rows.
      */
-    public void transformNormalByInverse(Vec3 n) {
+    public void transformNormalByInverse(MutableVec3 n) {
         n.set(m[0] * n.x + m[4] * n.y + m[8] * n.z,
               m[1] * n.x + m[5] * n.y + m[9] * n.z,
               m[2] * n.x + m[6] * n.y + m[10] * n.z);
@@ -153,7 +153,7 @@ public final class Matrix4 {
      * Transforms a point-error bound through this matrix (pbrt-v3, eq. 3.16):
      * |M| e (1 + gamma(3)) + gamma(3) |M| |p|, written into {@code err}.
      */
-    public void transformPointError(Vec3 p, Vec3 err) {
+    public void transformPointError(MutableVec3 p, MutableVec3 err) {
         double g3 = Rounding.gamma(3);
         double ex = Math.abs(m[0]) * err.x + Math.abs(m[1]) * err.y + Math.abs(m[2]) * err.z;
         double ey = Math.abs(m[4]) * err.x + Math.abs(m[5]) * err.y + Math.abs(m[6]) * err.z;

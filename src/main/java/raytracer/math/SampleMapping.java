@@ -12,7 +12,7 @@ public final class SampleMapping {
      * Shirley and Chiu's concentric map of [0,1)^2 onto the unit disk: area-preserving and with
      * little distortion, so stratification survives. Writes (x, y, 0) into {@code out}.
      */
-    public static void toUnitDisk(double sx, double sy, Vec3 out) {
+    public static void toUnitDisk(double sx, double sy, MutableVec3 out) {
         double a = 2 * sx - 1;
         double b = 2 * sy - 1;
         if (a == 0 && b == 0) {
@@ -35,7 +35,7 @@ public final class SampleMapping {
      * Maps [0,1)^2 onto the hemisphere around +z with density proportional to cos^e(theta)
      * (Suffern, eq. 7.11 / SPEC section 2): phi = 2 pi sx, cos(theta) = (1 - sy)^(1/(e+1)).
      */
-    public static void toHemisphere(double sx, double sy, double e, Vec3 out) {
+    public static void toHemisphere(double sx, double sy, double e, MutableVec3 out) {
         double cosTheta = Math.pow(1 - sy, 1 / (e + 1));
         double sinTheta = Math.sqrt(Math.max(0, 1 - cosTheta * cosTheta));
         double phi = 2 * Math.PI * sx;
@@ -47,7 +47,7 @@ public final class SampleMapping {
      * the axis (a glossy lobe around its mirror direction; with e = 1, cosine sampling around a
      * normal). The frame (a, b, axis) is built from whichever of y and x is further from the axis.
      */
-    public static void toHemisphere(double sx, double sy, double e, double axisX, double axisY, double axisZ, Vec3 out) {
+    public static void toHemisphere(double sx, double sy, double e, double axisX, double axisY, double axisZ, MutableVec3 out) {
         double hx = Math.abs(axisX) > 0.9 ? 0 : 1;
         double hy = Math.abs(axisX) > 0.9 ? 1 : 0;
         // a = h x axis, normalised; b = axis x a

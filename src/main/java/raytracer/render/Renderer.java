@@ -15,10 +15,10 @@ import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Rng;
 import raytracer.math.SampleMapping;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * Renders a prepared {@link World} on the run's {@link Workers}: the image is cut into square tiles,
@@ -138,7 +138,7 @@ public final class Renderer {
             lensSamples(n, sampler, s);
         }
         Ray ray = s.ray(0);
-        Rgb sample = s.color(0);
+        MutableRgb sample = s.color(0);
         double r = 0;
         double g = 0;
         double b = 0;
@@ -163,7 +163,7 @@ public final class Renderer {
      */
     private static void lensSamples(int n, Sampler sampler, WorkerScratch s) {
         sampler.generate(n, s.rng, s.lensX, s.lensY);
-        Vec3 disk = s.diskScratch;
+        MutableVec3 disk = s.diskScratch;
         for (int i = n - 1; i >= 0; i--) {
             int j = s.rng.nextInt(i + 1);
             double lx = s.lensX[j];

@@ -1,7 +1,7 @@
 package raytracer.textures;
 
 import raytracer.image.Film;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * Bilinear interpolation of a film at (s, t) in [0, 1)^2 (t down): s wraps around; t wraps too for
@@ -11,11 +11,11 @@ final class Bilinear {
     private Bilinear() {
     }
 
-    static void lookup(Film image, double s, double t, Rgb out) {
+    static void lookup(Film image, double s, double t, MutableRgb out) {
         lookup(image, s, t, true, out);
     }
 
-    static void lookup(Film image, double s, double t, boolean wrapT, Rgb out) {
+    static void lookup(Film image, double s, double t, boolean wrapT, MutableRgb out) {
         int w = image.width();
         int h = image.height();
         double x = (s - Math.floor(s)) * w - 0.5;

@@ -3,7 +3,7 @@ package raytracer.textures;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** A checkerboard in texture space: squares of {@code size} in u and v alternate two colours. */
 public final class Checker implements Texture {
@@ -21,7 +21,7 @@ public final class Checker implements Texture {
     }
 
     @Override
-    public void getColor(ShadeRec sr, Rgb out) {
+    public void getColor(ShadeRec sr, MutableRgb out) {
         long i = (long) Math.floor(sr.u / size) + (long) Math.floor(sr.v / size);
         out.set((i & 1) == 0 ? a : b);
     }

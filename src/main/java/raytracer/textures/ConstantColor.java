@@ -3,7 +3,7 @@ package raytracer.textures;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * The same colour everywhere (Suffern, section 29.2): the texture counterpart of a material's plain
@@ -17,7 +17,7 @@ public final class ConstantColor implements Texture {
     }
 
     @Override
-    public void getColor(ShadeRec sr, Rgb out) {
+    public void getColor(ShadeRec sr, MutableRgb out) {
         out.set(color);
     }
 }

@@ -3,7 +3,7 @@ package raytracer.textures;
 import raytracer.core.Background;
 import raytracer.image.Film;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * An equirectangular (latitude-longitude) environment: the direction d looks up
@@ -29,7 +29,7 @@ public final class EnvironmentMap implements Background {
     }
 
     @Override
-    public void radiance(Ray ray, Rgb out) {
+    public void radiance(Ray ray, MutableRgb out) {
         double len = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dy = Math.max(-1, Math.min(1, ray.dy / len));
         double u = 0.5 + uOffset + Math.atan2(ray.dx, -ray.dz) / (2 * Math.PI);

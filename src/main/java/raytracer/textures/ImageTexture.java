@@ -3,7 +3,7 @@ package raytracer.textures;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.image.Film;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * An image wrapped over u, v in [0, 1] (v up, as OBJ's vt), repeating outside, with bilinear
@@ -17,7 +17,7 @@ public final class ImageTexture implements Texture {
     }
 
     @Override
-    public void getColor(ShadeRec sr, Rgb out) {
+    public void getColor(ShadeRec sr, MutableRgb out) {
         Bilinear.lookup(image, sr.u, 1 - sr.v, out);
     }
 }

@@ -5,7 +5,7 @@ import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * The area-lighting tracer (Suffern, chapter 18): Whitted's recursion, but the closest hit's
@@ -22,7 +22,7 @@ public final class AreaLighting implements Tracer {
     }
 
     @Override
-    public void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+    public void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         if (depth > world.viewPlane().maxDepth()) {
             out.setBlack();
             return;

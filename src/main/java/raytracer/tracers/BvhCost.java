@@ -5,7 +5,7 @@ import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * The report's debug view (figure 9): instead of radiance, each primary ray returns the number of
@@ -20,7 +20,7 @@ public final class BvhCost implements Tracer {
     }
 
     @Override
-    public void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+    public void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         ShadeRec sr = scratch.shadeRec(depth);
         sr.depth = depth;
         long before = sr.boxTests;

@@ -5,7 +5,7 @@ import raytracer.core.ShadeRec;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /** The tracers' common step: the closest hit to shade, or the environment a ray escapes to. */
 final class ClosestHit {
@@ -17,7 +17,7 @@ final class ClosestHit {
      * to shade; or null after writing into {@code out} what the escaping ray sees: the background,
      * or the reflection map of the object it left (a per-object environment).
      */
-    static ShadeRec find(World world, Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+    static ShadeRec find(World world, Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         ShadeRec sr = scratch.shadeRec(depth);
         sr.depth = depth;
         if (world.hit(ray, sr)) {

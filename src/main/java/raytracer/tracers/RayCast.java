@@ -5,7 +5,7 @@ import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * The ray-cast tracer (Suffern, section 14.5): only primary rays are shaded, with {@code shade}.
@@ -19,7 +19,7 @@ public final class RayCast implements Tracer {
     }
 
     @Override
-    public void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+    public void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         if (depth > 0) {
             out.setBlack();
             return;

@@ -5,7 +5,7 @@ import raytracer.core.Tracer;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * Whitted's tracer (Suffern, section 24.4): the closest hit's material shades it with
@@ -21,7 +21,7 @@ public final class Whitted implements Tracer {
     }
 
     @Override
-    public void traceRay(Ray ray, int depth, WorkerScratch scratch, Rgb out) {
+    public void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         if (depth > world.viewPlane().maxDepth()) {
             out.setBlack();
             return;

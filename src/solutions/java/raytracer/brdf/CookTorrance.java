@@ -3,8 +3,8 @@ package raytracer.brdf;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * Reference solution of exercise 7 (docs/teaching.md): the Cook-Torrance microfacet BRDF
@@ -27,8 +27,8 @@ public final class CookTorrance implements BRDF {
     }
 
     @Override
-    public void f(ShadeRec sr, Vec3 wo, Vec3 wi, Rgb out) {
-        Vec3 n = sr.normal;
+    public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
+        MutableVec3 n = sr.normal;
         double cosO = n.dot(wo);
         double cosI = n.dot(wi);
         double hx = wo.x + wi.x;
@@ -46,8 +46,8 @@ public final class CookTorrance implements BRDF {
     }
 
     @Override
-    public boolean sampleF(ShadeRec sr, Vec3 wo, double u, double v, Vec3 wi, Rgb weight) {
-        Vec3 n = sr.normal;
+    public boolean sampleF(ShadeRec sr, MutableVec3 wo, double u, double v, MutableVec3 wi, MutableRgb weight) {
+        MutableVec3 n = sr.normal;
         double cosO = n.dot(wo);
         // a half vector with density D(h) (n.h): tan^2(theta_h) = alpha^2 u / (1 - u)
         double cos2 = (1 - u) / (1 + (alpha2 - 1) * u);
@@ -83,8 +83,8 @@ public final class CookTorrance implements BRDF {
     }
 
     @Override
-    public double pdf(ShadeRec sr, Vec3 wo, Vec3 wi) {
-        Vec3 n = sr.normal;
+    public double pdf(ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
+        MutableVec3 n = sr.normal;
         double hx = wo.x + wi.x;
         double hy = wo.y + wi.y;
         double hz = wo.z + wi.z;
@@ -99,7 +99,7 @@ public final class CookTorrance implements BRDF {
 
     /** A glossy lobe answers no ambient light, as Suffern's GlossySpecular does. */
     @Override
-    public void rho(ShadeRec sr, Vec3 wo, Rgb out) {
+    public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
 
@@ -112,7 +112,7 @@ public final class CookTorrance implements BRDF {
         return 2 * cos / (cos + Math.sqrt(alpha2 + (1 - alpha2) * cos * cos));
     }
 
-    private Rgb schlick(double cosD, Rgb out) {
+    private MutableRgb schlick(double cosD, MutableRgb out) {
         double m = Math.pow(1 - cosD, 5);
         return out.set(f0.r() + (1 - f0.r()) * m, f0.g() + (1 - f0.g()) * m, f0.b() + (1 - f0.b()) * m);
     }

@@ -4,9 +4,9 @@ import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.SampleMapping;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /**
  * Reference solution of exercise 4 (docs/teaching.md): ambient occlusion (Suffern, chapter 17).
@@ -29,15 +29,15 @@ public final class AmbientOccluder extends Light {
 
     /** Ambient light has no one direction. */
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         wi.set(0, 0, 0);
         return 0;
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         // sr.wi is free here: a material takes its ambient term before any light's direction
-        Vec3 w = sr.wi;
+        MutableVec3 w = sr.wi;
         Ray shadowRay = sr.scratch.shadowRay;
         int open = 0;
         for (int i = 0; i < samples; i++) {

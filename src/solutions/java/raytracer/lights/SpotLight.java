@@ -4,8 +4,8 @@ import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -47,7 +47,7 @@ public final class SpotLight extends Light {
     }
 
     @Override
-    public double getDirection(ShadeRec sr, Vec3 wi) {
+    public double getDirection(ShadeRec sr, MutableVec3 wi) {
         wi.set(px - sr.hitPoint.x, py - sr.hitPoint.y, pz - sr.hitPoint.z);
         double distance = wi.length();
         wi.set(wi.x / distance, wi.y / distance, wi.z / distance);
@@ -55,7 +55,7 @@ public final class SpotLight extends Light {
     }
 
     @Override
-    public void L(ShadeRec sr, Rgb out) {
+    public void L(ShadeRec sr, MutableRgb out) {
         double dx = sr.hitPoint.x - px;
         double dy = sr.hitPoint.y - py;
         double dz = sr.hitPoint.z - pz;

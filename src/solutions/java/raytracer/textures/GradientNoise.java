@@ -3,7 +3,7 @@ package raytracer.textures;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Rng;
 
 /**
@@ -31,7 +31,7 @@ public final class GradientNoise implements Texture {
     }
 
     @Override
-    public void getColor(ShadeRec sr, Rgb out) {
+    public void getColor(ShadeRec sr, MutableRgb out) {
         double n = noise(sr.localHitPoint.x / scale, sr.localHitPoint.y / scale, sr.localHitPoint.z / scale);
         double t = Math.max(0, Math.min(1, (1 + n) / 2));
         out.set(low.r() + t * (high.r() - low.r()), low.g() + t * (high.g() - low.g()), low.b() + t * (high.b() - low.b()));

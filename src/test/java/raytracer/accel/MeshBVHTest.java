@@ -16,7 +16,7 @@ import raytracer.materials.Matte;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
 import raytracer.math.ShearedRay;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 import raytracer.shapes.Watertight;
 import raytracer.shapes.mesh.Mesh;
 import raytracer.shapes.mesh.TriangleMesh;
@@ -217,7 +217,7 @@ class MeshBVHTest {
         }
     }
 
-    private static void assertEqualVectors(Vec3 expected, Vec3 actual, String what) {
+    private static void assertEqualVectors(MutableVec3 expected, MutableVec3 actual, String what) {
         assertEquals(expected.x, actual.x, 0, what);
         assertEquals(expected.y, actual.y, 0, what);
         assertEquals(expected.z, actual.z, 0, what);

@@ -17,8 +17,8 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -53,8 +53,8 @@ class BrdfPropertiesTest {
             Model m = Model.random(random);
             ShadeRec sr = shadeRec(unitVector(random));
             for (int i = 0; i < 20; i++) {
-                Vec3 wo = hemisphere(random, sr.normal);
-                Vec3 wi = hemisphere(random, sr.normal);
+                MutableVec3 wo = hemisphere(random, sr.normal);
+                MutableVec3 wi = hemisphere(random, sr.normal);
                 double ab = f(m.brdf, sr, wo, wi);
                 double ba = f(m.brdf, sr, wi, wo);
                 assertTrue(Double.isFinite(ab) && ab >= 0, m + ": f = " + ab);
@@ -72,7 +72,7 @@ class BrdfPropertiesTest {
             if (m.kind == Kind.WARD_DUER) {
                 thetaO = Math.min(thetaO, 70);
             }
-            Vec3 wo = new Vec3().set(Math.sin(Math.toRadians(thetaO)), 0, Math.cos(Math.toRadians(thetaO)));
+            MutableVec3 wo = new MutableVec3().set(Math.sin(Math.toRadians(thetaO)), 0, Math.cos(Math.toRadians(thetaO)));
             double albedo = albedo(m.brdf, sr, wo, m.width);
             String what = m + " at theta_o " + thetaO + ": albedo " + albedo + ", bound " + m.bound;
             assertTrue(albedo <= m.bound * (1 + QUADRATURE), what);
@@ -121,12 +121,12 @@ class BrdfPropertiesTest {
      * 4 (wo . h) d omega_h, with theta_h = atan(width s) on a grid of s that is fine near the peak and
      * reaches the horizon, so the steps follow the lobe whatever its width.
      */
-    private static double albedo(BRDF brdf, ShadeRec sr, Vec3 wo, double width) {
+    private static double albedo(BRDF brdf, ShadeRec sr, MutableVec3 wo, double width) {
         int steps = 400;
         int phis = 160;
         double sMax = Math.tan(Math.PI / 2 - 1e-9) / width;
-        Rgb out = new Rgb();
-        Vec3 wi = new Vec3();
+        MutableRgb out = new MutableRgb();
+        MutableVec3 wi = new MutableVec3();
         double sum = 0;
         for (int i = 0; i < steps; i++) {
             double theta0 = Math.atan(width * Math.expm1((double) i / steps * Math.log1p(sMax)));
@@ -150,22 +150,22 @@ class BrdfPropertiesTest {
         return sum;
     }
 
-    private static double f(BRDF brdf, ShadeRec sr, Vec3 wo, Vec3 wi) {
-        Rgb out = new Rgb();
+    private static double f(BRDF brdf, ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
+        MutableRgb out = new MutableRgb();
         brdf.f(sr, wo, wi, out);
         return out.r;
     }
 
     /** A direction on the side of n, never closer than 1e-6 to grazing (where f cos is what counts). */
-    private static Vec3 hemisphere(SplittableRandom random, Vec3 n) {
+    private static MutableVec3 hemisphere(SplittableRandom random, MutableVec3 n) {
         while (true) {
             double[] d = unitVector(random);
             double cos = d[0] * n.x + d[1] * n.y + d[2] * n.z;
             if (cos > 1e-6) {
-                return new Vec3().set(d[0], d[1], d[2]);
+                return new MutableVec3().set(d[0], d[1], d[2]);
             }
             if (cos < -1e-6) {
-                return new Vec3().set(-d[0], -d[1], -d[2]);
+                return new MutableVec3().set(-d[0], -d[1], -d[2]);
             }
         }
     }

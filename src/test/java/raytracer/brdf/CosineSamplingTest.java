@@ -10,8 +10,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import raytracer.core.BRDF;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /**
  * The BRDF interface's default sample_f / pdf, cosine sampling of the hemisphere, which Lambertian,
@@ -24,12 +24,12 @@ class CosineSamplingTest {
     void lambertianWeightIsItsAlbedoExactlyAndThePdfIsCosOverPi() {
         Lambertian lambertian = new Lambertian(0.7, new RGBColor(1, 0.5, 0.2));
         SplittableRandom random = new SplittableRandom(2);
-        Vec3 wi = new Vec3();
-        Rgb weight = new Rgb();
+        MutableVec3 wi = new MutableVec3();
+        MutableRgb weight = new MutableRgb();
         for (int i = 0; i < 10_000; i++) {
             // a tilted normal, so that the frame around it is exercised too
             ShadeRec sr = Hits.withNormal(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1));
-            Vec3 wo = new Vec3().set(sr.normal);
+            MutableVec3 wo = new MutableVec3().set(sr.normal);
             if (!lambertian.sampleF(sr, wo, random.nextDouble(), random.nextDouble(), wi, weight)) {
                 continue;
             }
@@ -49,8 +49,8 @@ class CosineSamplingTest {
         // E[cos] = 2/3 and E[cos^2] = 1/2 under the density cos / pi
         ShadeRec sr = Hits.withNormal(0.3, -0.5, 0.8);
         Lambertian lambertian = new Lambertian(1, RGBColor.WHITE);
-        Vec3 wi = new Vec3();
-        Rgb weight = new Rgb();
+        MutableVec3 wi = new MutableVec3();
+        MutableRgb weight = new MutableRgb();
         int grid = 300;
         double sum = 0;
         double sum2 = 0;
@@ -78,9 +78,9 @@ class CosineSamplingTest {
     void monteCarloAlbedoMatchesTheQuadrature(FittedPreset preset) {
         BRDF lobe = preset.specular();
         ShadeRec sr = Hits.withNormal(0, 0, 1);
-        Vec3 wo = Hits.direction(30, 0);
-        Rgb f = new Rgb();
-        Vec3 wi = new Vec3();
+        MutableVec3 wo = Hits.direction(30, 0);
+        MutableRgb f = new MutableRgb();
+        MutableVec3 wi = new MutableVec3();
         int thetas = 1000;
         int phis = 720;
         double quadrature = 0;
@@ -94,7 +94,7 @@ class CosineSamplingTest {
             }
         }
         SplittableRandom random = new SplittableRandom(preset.ordinal());
-        Rgb weight = new Rgb();
+        MutableRgb weight = new MutableRgb();
         int n = 200_000;
         double sum = 0;
         double sum2 = 0;

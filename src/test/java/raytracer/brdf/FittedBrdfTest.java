@@ -6,22 +6,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.SplittableRandom;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 /** Ward, Ward-Duer and Blinn-Phong with the report's fitted presets: the properties a BRDF must have. */
 class FittedBrdfTest {
-    private static final Vec3 N = new Vec3().set(0, 0, 1);
+    private static final MutableVec3 N = new MutableVec3().set(0, 0, 1);
 
-    private static double lobe(FittedPreset p, Vec3 wo, Vec3 wi) {
+    private static double lobe(FittedPreset p, MutableVec3 wo, MutableVec3 wi) {
         return p.model() == FittedPreset.Model.BLINN_PHONG
             ? ((BlinnPhong) p.specular()).value(N, wo, wi)
             : ((Ward) p.specular()).value(N, wo, wi);
     }
 
-    private static Vec3 direction(double thetaDeg, double phiDeg) {
+    private static MutableVec3 direction(double thetaDeg, double phiDeg) {
         double t = Math.toRadians(thetaDeg);
         double p = Math.toRadians(phiDeg);
-        return new Vec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
+        return new MutableVec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
     }
 
     @ParameterizedTest
@@ -29,8 +29,8 @@ class FittedBrdfTest {
     void nonNegativeAndReciprocal(FittedPreset p) {
         SplittableRandom r = new SplittableRandom(p.ordinal());
         for (int i = 0; i < 20_000; i++) {
-            Vec3 a = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
-            Vec3 b = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
+            MutableVec3 a = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
+            MutableVec3 b = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
             double ab = lobe(p, a, b);
             double ba = lobe(p, b, a);
             assertTrue(ab >= 0, "negative");
@@ -52,8 +52,8 @@ class FittedBrdfTest {
             // bounded; Ward-Duer 1 / (4 pi a^2 cos(theta)), growing as its normalisation does;
             // Blinn-Phong (e + 2) / (2 pi) cos(theta)
             double angle = Math.toRadians(eps);
-            Vec3 wo = new Vec3().set(Math.cos(angle), 0, Math.sin(angle));
-            Vec3 wi = new Vec3().set(-Math.cos(angle), 0, Math.sin(angle));
+            MutableVec3 wo = new MutableVec3().set(Math.cos(angle), 0, Math.sin(angle));
+            MutableVec3 wi = new MutableVec3().set(-Math.cos(angle), 0, Math.sin(angle));
             double a2 = p.roughness() * p.roughness();
             double expected = switch (p.model()) {
                 case WARD -> 1 / (4 * Math.PI * a2);
@@ -62,7 +62,7 @@ class FittedBrdfTest {
             };
             assertEquals(expected, lobe(p, wo, wi) * Math.sin(angle), 1e-9 * expected, p + " at " + eps);
         }
-        assertEquals(0, lobe(p, new Vec3().set(1, 0, 0), direction(45, 180)), "exactly grazing gives 0");
+        assertEquals(0, lobe(p, new MutableVec3().set(1, 0, 0), direction(45, 180)), "exactly grazing gives 0");
     }
 
     /**
@@ -75,7 +75,7 @@ class FittedBrdfTest {
     void reflectsLessThanItReceives(FittedPreset p) {
         double width = p.model() == FittedPreset.Model.BLINN_PHONG ? Math.sqrt(2 / (p.roughness() + 2)) : p.roughness();
         for (double thetaO : new double[] {0, 30, 60, 80}) {
-            Vec3 wo = direction(thetaO, 0);
+            MutableVec3 wo = direction(thetaO, 0);
             double sMax = Math.tan(Math.PI / 2 - 1e-9) / width;
             int steps = 4000;
             int phis = 720;
@@ -92,12 +92,12 @@ class FittedBrdfTest {
                 double dTheta = theta1 - theta0;
                 for (int j = 0; j < phis; j++) {
                     double phiH = (j + 0.5) * 2 * Math.PI / phis;
-                    Vec3 h = new Vec3().set(Math.sin(thetaH) * Math.cos(phiH), Math.sin(thetaH) * Math.sin(phiH), Math.cos(thetaH));
+                    MutableVec3 h = new MutableVec3().set(Math.sin(thetaH) * Math.cos(phiH), Math.sin(thetaH) * Math.sin(phiH), Math.cos(thetaH));
                     double oh = wo.dot(h);
                     if (oh <= 0) {
                         continue;
                     }
-                    Vec3 wi = new Vec3().set(2 * oh * h.x - wo.x, 2 * oh * h.y - wo.y, 2 * oh * h.z - wo.z);
+                    MutableVec3 wi = new MutableVec3().set(2 * oh * h.x - wo.x, 2 * oh * h.y - wo.y, 2 * oh * h.z - wo.z);
                     if (wi.z <= 0) {
                         continue;
                     }

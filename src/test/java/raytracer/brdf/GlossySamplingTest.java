@@ -14,8 +14,8 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -28,7 +28,7 @@ import raytracer.math.Vector3D;
 class GlossySamplingTest {
 
     /** A smooth incident radiance, brighter towards +x and overhead. */
-    private static double radiance(Vec3 w) {
+    private static double radiance(MutableVec3 w) {
         return 1 + 0.8 * w.x + 0.5 * w.z * w.z;
     }
 
@@ -42,14 +42,14 @@ class GlossySamplingTest {
     }
 
     /** The viewer's direction, {@code degrees} from the normal in the xz plane. */
-    private static Vec3 viewer(double degrees) {
+    private static MutableVec3 viewer(double degrees) {
         double theta = Math.toRadians(degrees);
-        return new Vec3().set(-Math.sin(theta), 0, Math.cos(theta));
+        return new MutableVec3().set(-Math.sin(theta), 0, Math.cos(theta));
     }
 
     /** A function of a direction wi and the cosine of its angle alpha from the mirror direction. */
     private interface Integrand {
-        double at(Vec3 wi, double cosAlpha);
+        double at(MutableVec3 wi, double cosAlpha);
     }
 
     /**
@@ -65,7 +65,7 @@ class GlossySamplingTest {
         double[] b = {0, 1, 0};
         // cos^e(alpha) < exp(-70) beyond 12 / sqrt(e + 1)
         double alphaMax = Math.min(Math.PI / 2, 12 / Math.sqrt(e + 1));
-        Vec3 wi = new Vec3();
+        MutableVec3 wi = new MutableVec3();
         double integral = 0;
         for (int i = 0; i < steps; i++) {
             double alpha = (i + 0.5) * alphaMax / steps;
@@ -88,16 +88,16 @@ class GlossySamplingTest {
     @CsvSource({"1, 0", "20, 30", "20, 75", "200, 60", "1000, 10"})
     void sampleWeightsConvergeToTheQuadratureOfTheLobe(double e, double viewDegrees) {
         ShadeRec sr = hit();
-        Vec3 wo = viewer(viewDegrees);
+        MutableVec3 wo = viewer(viewDegrees);
         GlossySpecular lobe = new GlossySpecular(1, RGBColor.WHITE, e, false);
         SplittableRandom random = new SplittableRandom(11);
         int n = 400_000;
         double sum = 0;
         double sum2 = 0;
         double sumIndependent = 0;
-        Vec3 wi = new Vec3();
-        Rgb weight = new Rgb();
-        Rgb f = new Rgb();
+        MutableVec3 wi = new MutableVec3();
+        MutableRgb weight = new MutableRgb();
+        MutableRgb f = new MutableRgb();
         for (int i = 0; i < n; i++) {
             boolean above = lobe.sampleF(sr, wo, random.nextDouble(), random.nextDouble(), wi, weight);
             assertEquals(above, wi.z > 0, "false exactly below the surface");
@@ -128,7 +128,7 @@ class GlossySamplingTest {
     @CsvSource({"1, 0", "20, 75", "1000, 10"})
     void pdfIntegratesToOneOverTheHemisphereAroundTheMirrorDirection(double e, double viewDegrees) {
         ShadeRec sr = hit();
-        Vec3 wo = viewer(viewDegrees);
+        MutableVec3 wo = viewer(viewDegrees);
         GlossySpecular lobe = new GlossySpecular(0.7, RGBColor.WHITE, e, true);
         double total = quadratureAroundMirror(viewDegrees, e, true, 1000, 360, (w, cosAlpha) -> lobe.pdf(sr, wo, w));
         assertEquals(1, total, 1e-4, "e=" + e);
@@ -139,13 +139,13 @@ class GlossySamplingTest {
     void theNormalisedLobeWeighsByItsNormalisation(double e, double viewDegrees) {
         // same direction for the same (u, v): the weight scales by (e + 2) / (2 pi) exactly
         ShadeRec sr = hit();
-        Vec3 wo = viewer(viewDegrees);
+        MutableVec3 wo = viewer(viewDegrees);
         GlossySpecular plain = new GlossySpecular(0.5, new RGBColor(1, 0.5, 0.25), e, false);
         GlossySpecular normalised = new GlossySpecular(0.5, new RGBColor(1, 0.5, 0.25), e, true);
-        Vec3 w1 = new Vec3();
-        Vec3 w2 = new Vec3();
-        Rgb a = new Rgb();
-        Rgb b = new Rgb();
+        MutableVec3 w1 = new MutableVec3();
+        MutableVec3 w2 = new MutableVec3();
+        MutableRgb a = new MutableRgb();
+        MutableRgb b = new MutableRgb();
         SplittableRandom random = new SplittableRandom(3);
         for (int i = 0; i < 1000; i++) {
             double u = random.nextDouble();

@@ -8,7 +8,7 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /** Hit records and directions for testing BRDFs outside a render. */
@@ -27,9 +27,9 @@ final class Hits {
     }
 
     /** The unit direction at polar angle {@code thetaDeg} from +z and azimuth {@code phiDeg}. */
-    static Vec3 direction(double thetaDeg, double phiDeg) {
+    static MutableVec3 direction(double thetaDeg, double phiDeg) {
         double t = Math.toRadians(thetaDeg);
         double p = Math.toRadians(phiDeg);
-        return new Vec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
+        return new MutableVec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
     }
 }

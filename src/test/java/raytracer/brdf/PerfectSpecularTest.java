@@ -7,8 +7,8 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 
 /** The mirror's sample_f: the law of reflection and the weight kr cr, whatever the sample. */
 class PerfectSpecularTest {
@@ -17,14 +17,14 @@ class PerfectSpecularTest {
     void samplesTheMirrorDirectionWithWeightKrCr() {
         PerfectSpecular mirror = new PerfectSpecular(0.8, new RGBColor(1, 0.5, 0.25));
         SplittableRandom random = new SplittableRandom(17);
-        Vec3 wi = new Vec3();
-        Rgb weight = new Rgb();
+        MutableVec3 wi = new MutableVec3();
+        MutableRgb weight = new MutableRgb();
         for (int i = 0; i < 10_000; i++) {
             ShadeRec sr = i % 100 == 0
                 ? Hits.withNormal(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1))
                 : Hits.withNormal(0, 0, 1);
-            Vec3 n = sr.normal;
-            Vec3 wo = new Vec3().set(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1)).normalize();
+            MutableVec3 n = sr.normal;
+            MutableVec3 wo = new MutableVec3().set(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1)).normalize();
             if (n.dot(wo) <= 0) {
                 wo.negate();
             }
@@ -48,9 +48,9 @@ class PerfectSpecularTest {
     void aDeltaHasNoValueNoDensityAndNoAmbientResponse() {
         PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
         ShadeRec sr = Hits.withNormal(0, 0, 1);
-        Vec3 wo = Hits.direction(30, 0);
-        Vec3 wi = Hits.direction(30, 180); // the mirror direction itself
-        Rgb out = new Rgb().set(1, 1, 1);
+        MutableVec3 wo = Hits.direction(30, 0);
+        MutableVec3 wi = Hits.direction(30, 180); // the mirror direction itself
+        MutableRgb out = new MutableRgb().set(1, 1, 1);
         mirror.f(sr, wo, wi, out);
         assertEquals(0, out.r + out.g + out.b);
         assertEquals(0, mirror.pdf(sr, wo, wi));

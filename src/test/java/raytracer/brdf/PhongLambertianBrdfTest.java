@@ -16,8 +16,8 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -36,14 +36,14 @@ class PhongLambertianBrdfTest {
         return sr;
     }
 
-    private static Vec3 direction(double thetaDeg, double phiDeg) {
+    private static MutableVec3 direction(double thetaDeg, double phiDeg) {
         double t = Math.toRadians(thetaDeg);
         double p = Math.toRadians(phiDeg);
-        return new Vec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
+        return new MutableVec3().set(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t));
     }
 
-    private static double f(BRDF brdf, ShadeRec sr, Vec3 wo, Vec3 wi) {
-        Rgb out = new Rgb();
+    private static double f(BRDF brdf, ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
+        MutableRgb out = new MutableRgb();
         brdf.f(sr, wo, wi, out);
         return out.r;
     }
@@ -60,8 +60,8 @@ class PhongLambertianBrdfTest {
         SplittableRandom r = new SplittableRandom(3);
         for (BRDF brdf : brdfs(e)) {
             for (int i = 0; i < 20_000; i++) {
-                Vec3 a = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
-                Vec3 b = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
+                MutableVec3 a = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
+                MutableVec3 b = direction(r.nextDouble(0, 90), r.nextDouble(0, 360));
                 double ab = f(brdf, sr, a, b);
                 double ba = f(brdf, sr, b, a);
                 assertTrue(ab >= 0, "negative");
@@ -82,7 +82,7 @@ class PhongLambertianBrdfTest {
      */
     private static double albedo(BRDF brdf, ShadeRec sr, double e, double thetaO) {
         double t = Math.toRadians(thetaO);
-        Vec3 wo = new Vec3().set(-Math.sin(t), 0, Math.cos(t));
+        MutableVec3 wo = new MutableVec3().set(-Math.sin(t), 0, Math.cos(t));
         double[] rr = {Math.sin(t), 0, Math.cos(t)};
         double[] a = {Math.cos(t), 0, -Math.sin(t)};
         double[] b = {0, 1, 0};
@@ -91,7 +91,7 @@ class PhongLambertianBrdfTest {
         int steps = 2000;
         int phis = 720;
         double sum = 0;
-        Vec3 wi = new Vec3();
+        MutableVec3 wi = new MutableVec3();
         for (int i = 0; i < steps; i++) {
             double alpha = (i + 0.5) * alphaMax / steps;
             for (int j = 0; j < phis; j++) {

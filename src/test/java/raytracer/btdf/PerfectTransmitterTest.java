@@ -14,8 +14,8 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /**
@@ -42,9 +42,9 @@ class PerfectTransmitterTest {
         double i = Math.toRadians(degrees);
         ShadeRec sr = hit(entering);
         // wo in the xz plane, degrees from the normal, on the +x side
-        Vec3 wo = new Vec3().set(Math.sin(i), 0, Math.cos(i));
-        Vec3 wt = new Vec3();
-        Rgb weight = new Rgb();
+        MutableVec3 wo = new MutableVec3().set(Math.sin(i), 0, Math.cos(i));
+        MutableVec3 wt = new MutableVec3();
+        MutableRgb weight = new MutableRgb();
         assertTrue(new PerfectTransmitter(ior).sampleF(sr, wo, wt, weight));
         double etaI = entering ? 1 : ior;
         double etaT = entering ? ior : 1;
@@ -68,8 +68,8 @@ class PerfectTransmitterTest {
         assertTrue(Math.sin(Math.toRadians(degrees)) * ior > 1, "past the critical angle asin(1 / ior)");
         ShadeRec sr = hit(false);
         double i = Math.toRadians(degrees);
-        Rgb weight = new Rgb().set(1, 1, 1);
-        assertFalse(new PerfectTransmitter(ior).sampleF(sr, new Vec3().set(Math.sin(i), 0, Math.cos(i)), new Vec3(), weight));
+        MutableRgb weight = new MutableRgb().set(1, 1, 1);
+        assertFalse(new PerfectTransmitter(ior).sampleF(sr, new MutableVec3().set(Math.sin(i), 0, Math.cos(i)), new MutableVec3(), weight));
         assertEquals(0, weight.r + weight.g + weight.b);
     }
 
@@ -78,9 +78,9 @@ class PerfectTransmitterTest {
     void aDeltaHasNoValueAndNoAmbientResponse(boolean entering) {
         ShadeRec sr = hit(entering);
         PerfectTransmitter transmitter = new PerfectTransmitter(1.5);
-        Vec3 wo = new Vec3().set(0, 0, 1);
-        Rgb out = new Rgb().set(1, 1, 1);
-        transmitter.f(sr, wo, new Vec3().set(0, 0, -1), out);
+        MutableVec3 wo = new MutableVec3().set(0, 0, 1);
+        MutableRgb out = new MutableRgb().set(1, 1, 1);
+        transmitter.f(sr, wo, new MutableVec3().set(0, 0, -1), out);
         assertEquals(0, out.r + out.g + out.b);
         out.set(1, 1, 1);
         transmitter.rho(sr, wo, out);

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 
 /**
  * The ray-tree policy on hand-worked numbers: path weights multiply down the tree, a branch is
@@ -71,7 +71,7 @@ class RayTreePolicyTest {
         assertFalse(direct.showsRefraction(0));
         assertTrue(direct.showsReflection(1), "deeper hits are shaded in full");
         RayTreePolicy magenta = policy(0, 1, ShadingPass.MAGENTA_REFLECTION);
-        Rgb seen = new Rgb();
+        MutableRgb seen = new MutableRgb();
         magenta.reflectedEnvironment(0, own).radiance(null, seen);
         assertEquals(1, seen.r);
         assertEquals(0, seen.g);

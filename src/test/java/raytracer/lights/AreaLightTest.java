@@ -20,8 +20,8 @@ import raytracer.materials.Reflective;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
 import raytracer.render.Renders;
@@ -145,8 +145,8 @@ class AreaLightTest {
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         sr.hitPoint.set(0, 0, 0);
         sr.normal.set(0, 1, 0);
-        Rgb le = new Rgb();
-        Vec3 wi = new Vec3();
+        MutableRgb le = new MutableRgb();
+        MutableVec3 wi = new MutableVec3();
         int grid = 400;
         double sum = 0;
         for (int i = 0; i < grid; i++) {
@@ -168,7 +168,7 @@ class AreaLightTest {
             new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         sr.hitPoint.set(0, 0, 0);
-        Vec3 wi = new Vec3();
+        MutableVec3 wi = new MutableVec3();
         AreaLight light = disk(1);
         // the concentric map sends (0.5, 0.5) to the centre, straight above at h = 2
         assertEquals(2, light.sample(sr, 0.5, 0.5, wi), 1e-12);
@@ -206,10 +206,10 @@ class AreaLightTest {
             new DiskEmitter(new Point3D(0.5, 1, 0), new Vector3D(1, -2, 0.5), 0.7),
             new SphereEmitter(new Point3D(0, 1.5, 0.5), 0.6)};
         SplittableRandom random = new SplittableRandom(5);
-        Vec3 p = new Vec3();
-        Vec3 n = new Vec3();
-        Vec3 q = new Vec3();
-        Vec3 qn = new Vec3();
+        MutableVec3 p = new MutableVec3();
+        MutableVec3 n = new MutableVec3();
+        MutableVec3 q = new MutableVec3();
+        MutableVec3 qn = new MutableVec3();
         for (Emitter e : emitters) {
             int refused = 0;
             for (int i = 0; i < 20_000; i++) {

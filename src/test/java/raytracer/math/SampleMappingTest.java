@@ -10,7 +10,7 @@ class SampleMappingTest {
 
     @Test
     void diskMapStaysInTheDiskAndPreservesArea() {
-        Vec3 p = new Vec3();
+        MutableVec3 p = new MutableVec3();
         int inner = 0;
         for (int i = 0; i < GRID; i++) {
             for (int j = 0; j < GRID; j++) {
@@ -28,7 +28,7 @@ class SampleMappingTest {
 
     @Test
     void hemisphereMapHasTheMeanCosineOfTheCosinePowerLobe() {
-        Vec3 w = new Vec3();
+        MutableVec3 w = new MutableVec3();
         for (double e : new double[] {0, 1, 10, 1000}) {
             double sum = 0;
             for (int i = 0; i < GRID; i++) {
@@ -51,9 +51,9 @@ class SampleMappingTest {
     @Test
     void hemisphereAroundAnAxisIsTheZMappingTurned() {
         java.util.SplittableRandom random = new java.util.SplittableRandom(9);
-        Vec3 axis = new Vec3();
-        Vec3 turned = new Vec3();
-        Vec3 plain = new Vec3();
+        MutableVec3 axis = new MutableVec3();
+        MutableVec3 turned = new MutableVec3();
+        MutableVec3 plain = new MutableVec3();
         for (int i = 0; i < 20_000; i++) {
             axis.set(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(-1, 1)).normalize();
             if (i % 3 == 0) {

@@ -71,12 +71,12 @@ class TransformPropertiesTest {
             double[] u = unitVector(random);
             // a tangent: u without its component along n
             double un = u[0] * n[0] + u[1] * n[1] + u[2] * n[2];
-            Vec3 tangent = new Vec3().set(u[0] - un * n[0], u[1] - un * n[1], u[2] - un * n[2]);
+            MutableVec3 tangent = new MutableVec3().set(u[0] - un * n[0], u[1] - un * n[1], u[2] - un * n[2]);
             if (tangent.length() < 1e-3) {
                 return;
             }
             a.m.transformVector(tangent);
-            Vec3 normal = new Vec3().set(n[0], n[1], n[2]);
+            MutableVec3 normal = new MutableVec3().set(n[0], n[1], n[2]);
             a.m.inverse().transformNormalByInverse(normal);
             double cos = tangent.dot(normal) / (tangent.length() * normal.length());
             assertEquals(0, cos, TOLERANCE, a.toString());

@@ -9,7 +9,7 @@ import raytracer.lights.Ambient;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Vector3D;
 import raytracer.samplers.Regular;
 import raytracer.shapes.Plane;
@@ -53,7 +53,7 @@ public final class NonFiniteScene {
     /** The faulty material: a constant colour but for a NaN stripe and an Inf stripe. */
     static final class Stripes extends Material {
         @Override
-        public void shade(ShadeRec sr, Rgb out) {
+        public void shade(ShadeRec sr, MutableRgb out) {
             out.set(COLOR);
             double x = sr.hitPoint.x;
             if (x >= NAN_FROM && x < NAN_TO) {
@@ -64,7 +64,7 @@ public final class NonFiniteScene {
         }
 
         @Override
-        public void areaLightShade(ShadeRec sr, Rgb out) {
+        public void areaLightShade(ShadeRec sr, MutableRgb out) {
             shade(sr, out); // the scene has no area light; the tracer may call either
         }
     }

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 
 class SphereTest {
     private final HitTesting h = new HitTesting();
@@ -120,7 +120,7 @@ class SphereTest {
     }
 
     /** How far p lies from the sphere's surface, exactly: (|p - c|^2 - r^2) / (|p - c| + r). */
-    private static double exactDistanceToSurface(Vec3 p, Point3D c, double r) {
+    private static double exactDistanceToSurface(MutableVec3 p, Point3D c, double r) {
         MathContext mc = new MathContext(40);
         BigDecimal[] e = {exact(p.x).subtract(exact(c.x())), exact(p.y).subtract(exact(c.y())), exact(p.z).subtract(exact(c.z()))};
         BigDecimal square = e[0].multiply(e[0]).add(e[1].multiply(e[1])).add(e[2].multiply(e[2]));
@@ -147,7 +147,7 @@ class SphereTest {
                 assertNotNull(sr, what);
                 assertEquals(expected, sr.t, 1e-9 * expected, what);
                 assertTrue(sr.frontFace, what);
-                Vec3 n = sr.geometricNormal;
+                MutableVec3 n = sr.geometricNormal;
                 double offset = Math.abs(n.x) * sr.hitError.x + Math.abs(n.y) * sr.hitError.y + Math.abs(n.z) * sr.hitError.z;
                 double off = Math.abs(exactDistanceToSurface(sr.hitPoint, c, r));
                 assertTrue(off <= offset, what + ": hit point " + off + " off the surface, bound " + offset);

@@ -13,7 +13,7 @@ import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Vector3D;
 
 class TexturesTest {
@@ -29,8 +29,8 @@ class TexturesTest {
         return film;
     }
 
-    private static Rgb look(EnvironmentMap map, double dx, double dy, double dz) {
-        Rgb out = new Rgb();
+    private static MutableRgb look(EnvironmentMap map, double dx, double dy, double dz) {
+        MutableRgb out = new MutableRgb();
         map.radiance(new Ray().set(0, 0, 0, dx, dy, dz), out);
         return out;
     }
@@ -66,7 +66,7 @@ class TexturesTest {
             new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE));
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         Checker checker = new Checker(RGBColor.WHITE, RGBColor.BLACK, 0.25);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         double[][] uvs = {{0.1, 0.1}, {0.3, 0.1}, {0.3, 0.3}, {-0.1, 0.1}};
         double[] expected = {1, 0, 1, 0};
         for (int i = 0; i < uvs.length; i++) {

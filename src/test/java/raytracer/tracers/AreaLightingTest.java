@@ -31,7 +31,7 @@ import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Vector3D;
 import raytracer.render.RenderStats;
 import raytracer.render.Renders;
@@ -120,7 +120,7 @@ class AreaLightingTest {
         world.prepare();
         WorkerScratch scratch = new WorkerScratch(world);
         Ray down = new Ray().set(0, 2, 0, 0, -1, 0);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         for (Tracer tracer : new Tracer[] {new Whitted(world), new RayCast(world)}) {
             IllegalStateException e = assertThrows(IllegalStateException.class, () -> tracer.traceRay(down, 0, scratch, out));
             assertTrue(e.getMessage().contains("AreaLighting"), e.getMessage());

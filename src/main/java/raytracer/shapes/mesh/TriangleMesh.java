@@ -7,9 +7,9 @@ import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.math.BBox;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.ShearedRay;
-import raytracer.math.Vec3;
+import raytracer.math.MutableVec3;
 import raytracer.shapes.Watertight;
 
 /**
@@ -157,7 +157,7 @@ public final class TriangleMesh extends GeometricObject {
      * the frame (T, B, N) where T and B follow u and v across the triangle (tangent space).
      */
     private void applyNormalMap(int tri, int id, ShadeRec sr) {
-        Rgb texel = sr.scratch.brdfScratch;
+        MutableRgb texel = sr.scratch.brdfScratch;
         normalMaps[id].getColor(sr, texel);
         double mx = 2 * texel.r - 1;
         double my = 2 * texel.g - 1;
@@ -189,7 +189,7 @@ public final class TriangleMesh extends GeometricObject {
         double tx = ((p[b] - p[a]) * dv2 - (p[c] - p[a]) * dv1) / det;
         double ty = ((p[b + 1] - p[a + 1]) * dv2 - (p[c + 1] - p[a + 1]) * dv1) / det;
         double tz = ((p[b + 2] - p[a + 2]) * dv2 - (p[c + 2] - p[a + 2]) * dv1) / det;
-        Vec3 n = sr.normal.normalize();
+        MutableVec3 n = sr.normal.normalize();
         // Gram-Schmidt: T perpendicular to N, B = N x T, flipped where the UVs are mirrored
         double tn = tx * n.x + ty * n.y + tz * n.z;
         tx -= tn * n.x;

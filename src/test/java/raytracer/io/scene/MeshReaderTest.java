@@ -28,8 +28,8 @@ import raytracer.materials.Phong;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
-import raytracer.math.Vec3;
+import raytracer.math.MutableRgb;
+import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
 /** How the keys of an MTL file become our materials. */
@@ -70,7 +70,7 @@ class MeshReaderTest {
         assertInstanceOf(Matte.class, m[7], "d wins over Tr, whatever their order");
 
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         sr.frontFace = true;
         m[4].shade(sr, out);
         assertEquals(4, out.r, 0);
@@ -106,7 +106,7 @@ class MeshReaderTest {
             world.prepare();
             ShadeRec sr = new WorkerScratch(world).shadeRec(0);
             assertTrue(world.hit(new Ray().set(0.1, 0.2, 1, 0, 0, -1), sr));
-            Rgb out = new Rgb();
+            MutableRgb out = new MutableRgb();
             sr.material.shade(sr, out);
             assertEquals(expected[i][0], out.r, 1e-12, names[i]);
             assertEquals(expected[i][1], out.g, 1e-12, names[i]);
@@ -124,11 +124,11 @@ class MeshReaderTest {
             map.setRGB(k % 2, k / 2, (204 << 16) | (128 << 8) | 230);
         }
         ImageIO.write(map, "png", dir.resolve("n.png").toFile());
-        Vec3 mapped = normalAtCentre(dir, "normal-map: {file: n.png, space: object}");
+        MutableVec3 mapped = normalAtCentre(dir, "normal-map: {file: n.png, space: object}");
         assertEquals(2 * 204 / 255.0 - 1, mapped.x, 0.01);
         assertEquals(0, mapped.y, 0.01);
         assertEquals(2 * 230 / 255.0 - 1, mapped.z, 0.01);
-        Vec3 tangent = normalAtCentre(dir, "normal-map: {file: n.png, space: tangent}");
+        MutableVec3 tangent = normalAtCentre(dir, "normal-map: {file: n.png, space: tangent}");
         // with u along +x and v along +y the tangent frame is the object frame here
         assertEquals(mapped.x, tangent.x, 1e-6);
         assertEquals(mapped.z, tangent.z, 1e-6);
@@ -136,9 +136,9 @@ class MeshReaderTest {
         // the same quad with an MTL whose norm map is the same picture: read as tangent space
         Files.writeString(dir.resolve("quad.mtl"), "newmtl bumpy\nKd 0.5 0.5 0.5\nnorm n.png\n");
         Files.writeString(dir.resolve("quad.obj"), "mtllib quad.mtl\nusemtl bumpy\n" + Files.readString(dir.resolve("quad.obj")));
-        Vec3 fromMtl = normalAtCentre(dir, "smooth: false");
+        MutableVec3 fromMtl = normalAtCentre(dir, "smooth: false");
         assertEquals(mapped.x, fromMtl.x, 1e-6, "the MTL's norm map applies without a normal-map key");
-        Vec3 plain = normalAtCentre(dir, "normal-map: none");
+        MutableVec3 plain = normalAtCentre(dir, "normal-map: none");
         assertEquals(1, plain.z, 1e-12, "none: not even the MTL's map, the face normal");
 
         String[][] bad = {
@@ -156,13 +156,13 @@ class MeshReaderTest {
     }
 
     /** The shading normal where a ray from +z meets the quad of {@code quad.obj} under these keys. */
-    private static Vec3 normalAtCentre(Path dir, String keys) throws Exception {
+    private static MutableVec3 normalAtCentre(Path dir, String keys) throws Exception {
         Files.writeString(dir.resolve("s.yaml"), "objects:\n  - {type: mesh, file: quad.obj, " + keys + "}\n");
         World world = SceneLoader.load(dir.resolve("s.yaml")).world();
         world.prepare();
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
         assertTrue(world.hit(new Ray().set(0.1, 0.2, 3, 0, 0, -1), sr));
-        return new Vec3().set(sr.normal);
+        return new MutableVec3().set(sr.normal);
     }
 
     private static World world() {

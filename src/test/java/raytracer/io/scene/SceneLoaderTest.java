@@ -21,7 +21,7 @@ import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.image.DisplayEncoding;
 import raytracer.math.Ray;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.shapes.Instance;
 import raytracer.tracers.RayCast;
 
@@ -50,9 +50,9 @@ class SceneLoaderTest {
     }
 
     /** The radiance the scene's tracer brings back along a ray from (ox, oy, oz) in direction d. */
-    private static Rgb trace(World world, double ox, double oy, double oz, double dx, double dy, double dz) {
+    private static MutableRgb trace(World world, double ox, double oy, double oz, double dx, double dy, double dz) {
         world.prepare();
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         world.tracer().traceRay(new Ray().set(ox, oy, oz, dx, dy, dz), 0, new WorkerScratch(world), out);
         return out;
     }
@@ -69,7 +69,7 @@ class SceneLoaderTest {
         assertEquals(2, set.world().viewPlane().exposure(), "the rest of image: still reaches the view plane");
     }
 
-    private static void assertRgb(double r, double g, double b, Rgb actual, String what) {
+    private static void assertRgb(double r, double g, double b, MutableRgb actual, String what) {
         assertEquals(r, actual.r, 1e-9 * Math.max(1, r), what + ", red");
         assertEquals(g, actual.g, 1e-9 * Math.max(1, g), what + ", green");
         assertEquals(b, actual.b, 1e-9 * Math.max(1, b), what + ", blue");
@@ -279,8 +279,8 @@ class SceneLoaderTest {
         raytracer.shapes.Sphere sphere = new raytracer.shapes.Sphere(raytracer.math.Point3D.ORIGIN, 1);
         sphere.setMaterial(new raytracer.materials.Dielectric(1.5, new raytracer.math.RGBColor(0.1, 0, 0.2), 0, 1000));
         built.addObject(sphere);
-        Rgb loaded = trace(world, 0.3, 0.2, 5, 0, 0, -1);
-        Rgb expected = trace(built, 0.3, 0.2, 5, 0, 0, -1);
+        MutableRgb loaded = trace(world, 0.3, 0.2, 5, 0, 0, -1);
+        MutableRgb expected = trace(built, 0.3, 0.2, 5, 0, 0, -1);
         assertRgb(expected.r, expected.g, expected.b, loaded, "glass");
         assertTrue(loaded.r < loaded.g - 0.05 && loaded.b < loaded.r - 0.05, "red and blue absorbed: " + loaded.r + ", " + loaded.b);
         // the brown Fresnel mirror in a white world without lights: Schlick's kr + (1 - kr)(1 - cos)^5 of its colour

@@ -22,7 +22,7 @@ import raytracer.core.World;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
-import raytracer.math.Rgb;
+import raytracer.math.MutableRgb;
 import raytracer.math.Vector3D;
 import raytracer.textures.ConstantColor;
 import raytracer.textures.ImageTexture;
@@ -55,7 +55,7 @@ class TextureReaderTest {
 
         ShadeRec sr = new WorkerScratch(new World(new ViewPlane(1, 1, 1, (n, rng, xs, ys) -> { }, 2, 1),
             new Pinhole(new Point3D(0, 0, 1), Point3D.ORIGIN, Vector3D.UP, 45), new Ambient(0, RGBColor.WHITE))).shadeRec(0);
-        Rgb out = new Rgb();
+        MutableRgb out = new MutableRgb();
         // the left texel's centre: u = 0.25; the PNG's 8-bit sRGB codes come back as linear radiance
         sr.u = 0.25;
         sr.v = 0.5;

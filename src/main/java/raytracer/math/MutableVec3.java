@@ -4,23 +4,23 @@ package raytracer.math;
  * A mutable triple for the per-ray path: fields of a {@link raytracer.core.ShadeRec} and per-worker
  * scratch are overwritten in place instead of allocating a new vector for every hit.
  */
-public final class Vec3 {
+public final class MutableVec3 {
     public double x;
     public double y;
     public double z;
 
-    public Vec3 set(double x, double y, double z) {
+    public MutableVec3 set(double x, double y, double z) {
         this.x = x;
         this.y = y;
         this.z = z;
         return this;
     }
 
-    public Vec3 set(Vec3 v) {
+    public MutableVec3 set(MutableVec3 v) {
         return set(v.x, v.y, v.z);
     }
 
-    public double dot(Vec3 v) {
+    public double dot(MutableVec3 v) {
         return x * v.x + y * v.y + z * v.z;
     }
 
@@ -32,7 +32,7 @@ public final class Vec3 {
         return Math.sqrt(x * x + y * y + z * z);
     }
 
-    public Vec3 normalize() {
+    public MutableVec3 normalize() {
         double inv = 1.0 / length();
         x *= inv;
         y *= inv;
@@ -40,7 +40,7 @@ public final class Vec3 {
         return this;
     }
 
-    public Vec3 negate() {
+    public MutableVec3 negate() {
         x = -x;
         y = -y;
         z = -z;

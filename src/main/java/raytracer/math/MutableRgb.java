@@ -1,31 +1,31 @@
 package raytracer.math;
 
 /** A mutable RGB accumulator: radiance is summed into one of these instead of allocating colours. */
-public final class Rgb {
+public final class MutableRgb {
     public double r;
     public double g;
     public double b;
 
-    public Rgb set(double r, double g, double b) {
+    public MutableRgb set(double r, double g, double b) {
         this.r = r;
         this.g = g;
         this.b = b;
         return this;
     }
 
-    public Rgb set(RGBColor c) {
+    public MutableRgb set(RGBColor c) {
         return set(c.r(), c.g(), c.b());
     }
 
-    public Rgb set(Rgb c) {
+    public MutableRgb set(MutableRgb c) {
         return set(c.r, c.g, c.b);
     }
 
-    public Rgb setBlack() {
+    public MutableRgb setBlack() {
         return set(0, 0, 0);
     }
 
-    public Rgb add(Rgb c) {
+    public MutableRgb add(MutableRgb c) {
         r += c.r;
         g += c.g;
         b += c.b;
@@ -33,7 +33,7 @@ public final class Rgb {
     }
 
     /** this += c * s, the step of every sum over lights and samples. */
-    public Rgb addScaled(RGBColor c, double s) {
+    public MutableRgb addScaled(RGBColor c, double s) {
         r += c.r() * s;
         g += c.g() * s;
         b += c.b() * s;
@@ -41,7 +41,7 @@ public final class Rgb {
     }
 
     /** this += p * c * s, component-wise. */
-    public Rgb addProduct(Rgb p, RGBColor c, double s) {
+    public MutableRgb addProduct(MutableRgb p, RGBColor c, double s) {
         r += p.r * c.r() * s;
         g += p.g * c.g() * s;
         b += p.b * c.b() * s;
@@ -49,21 +49,21 @@ public final class Rgb {
     }
 
     /** this += p * q * s, component-wise. */
-    public Rgb addProduct(Rgb p, Rgb q, double s) {
+    public MutableRgb addProduct(MutableRgb p, MutableRgb q, double s) {
         r += p.r * q.r * s;
         g += p.g * q.g * s;
         b += p.b * q.b * s;
         return this;
     }
 
-    public Rgb scale(double s) {
+    public MutableRgb scale(double s) {
         r *= s;
         g *= s;
         b *= s;
         return this;
     }
 
-    public Rgb mul(RGBColor c) {
+    public MutableRgb mul(RGBColor c) {
         r *= c.r();
         g *= c.g();
         b *= c.b();
