@@ -3,13 +3,14 @@ package raytracer.core;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
 import raytracer.math.Rng;
+import raytracer.math.ShearedRay;
 import raytracer.math.MutableVec3;
 
 /**
  * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
- * recursion depth, a shadow ray, the random generator and the sample buffers. Owned by one thread,
- * so nothing on the per-ray path allocates or synchronises. Also counts the rays it traced, and
- * holds the worker's {@link RayTreePolicy}.
+ * recursion depth, a shadow ray, BVH traversal state, the random generator and the sample
+ * buffers. Owned by one thread, so nothing on the per-ray path allocates or synchronises. Also
+ * counts the rays it traced, and holds the worker's {@link RayTreePolicy}.
  */
 public final class WorkerScratch {
     private final ShadeRec[] shadeRecs;
@@ -17,6 +18,10 @@ public final class WorkerScratch {
     private final MutableRgb[] colors;
     private final MutableRgb[] weights;
     public final Ray shadowRay = new Ray();
+    /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
+    public final TraversalStack traversals = new TraversalStack();
+    /** The watertight triangle test's constants for the ray whose triangles are being tested. */
+    public final ShearedRay shearedRay = new ShearedRay();
     /** Colour scratch for one light's incident radiance and the BRDF values that meet it. */
     public final MutableRgb lightScratch = new MutableRgb();
     public final MutableRgb brdfScratch = new MutableRgb();

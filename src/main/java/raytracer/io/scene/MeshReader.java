@@ -19,6 +19,7 @@ import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.math.RGBColor;
+import raytracer.shapes.mesh.TriangleMesh;
 import raytracer.textures.ImageTexture;
 
 /**
@@ -58,7 +59,7 @@ final class MeshReader {
                 materials.add(fromMtl(m, textures, report));
             }
         }
-        // the build's time includes the triangles' boxes and the mesh's leaf-ordered vertex copy
+        // the build's time includes the triangles' boxes and renumbering them in leaf order
         long buildStart = System.nanoTime();
         FlatBVH bvh = builder.equals("median")
             ? new MedianSplitBuilder(MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))
@@ -70,7 +71,7 @@ final class MeshReader {
                            built - buildStart);
         report.addStatistic(statistic(file, model));
         model.warnings().forEach(report::addWarning);
-        normalMaps(o, model, mesh, textures, report);
+        normalMaps(o, model, mesh.triangles(), textures, report);
         mesh.setMaterial(override != null ? override
                          : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
@@ -92,7 +93,7 @@ final class MeshReader {
      * {@code none}; without the key, each MTL material's norm / map_Bump read as a tangent-space
      * normal map (OpenGL convention).
      */
-    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, LoadReport report)
+    private static void normalMaps(YamlObject o, ObjModel model, TriangleMesh mesh, TextureReader textures, LoadReport report)
             throws SceneException {
         if (o.has("normal-map") && o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
             String value = o.requiredString("normal-map");
