@@ -18,6 +18,7 @@ import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
+import raytracer.render.SceneAnalysis;
 import raytracer.render.Workers;
 import raytracer.tracers.BvhCost;
 
@@ -51,6 +52,8 @@ final class RenderRun {
             RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
             DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
             long prepareStart = System.nanoTime();
+            // the cost view shows the search structure as the scene gives it: nothing left out
+            SceneAnalysis analysis = request.costView() ? null : SceneAnalysis.apply(world, rayTree);
             workers.call(() -> {
                 world.prepare(objects -> Aggregation.organize(objects, request.accel()));
                 return null;
@@ -67,6 +70,7 @@ final class RenderRun {
             }
             if (request.stats()) {
                 report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
+                report.skips(analysis, stats);
             }
             return 0;
         }

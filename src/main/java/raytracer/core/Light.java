@@ -1,12 +1,14 @@
 package raytracer.core;
 
-import raytracer.math.Ray;
+import raytracer.math.HalfSpace;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
+import raytracer.math.Ray;
 
 /** A light source (Suffern, chapter 14). */
 public abstract class Light {
     private boolean castsShadows = true;
+    private boolean shadowRaysLeftOut;
 
     /**
      * Writes the unit direction from the hit towards the light into {@code wi} and returns the
@@ -89,5 +91,47 @@ public abstract class Light {
 
     public void setCastsShadows(boolean castsShadows) {
         this.castsShadows = castsShadows;
+    }
+
+    /**
+     * Stops tracing shadow rays towards this light because the scene analysis proved that none
+     * could be blocked; the shading counts the rays it no longer traces
+     * ({@link Skipped#SHADOW_RAYS}).
+     */
+    public void leaveOutShadowRays() {
+        castsShadows = false;
+        shadowRaysLeftOut = true;
+    }
+
+    /** True after {@link #leaveOutShadowRays}: a shadow ray was due, and is counted instead of traced. */
+    public boolean shadowRaysLeftOut() {
+        return shadowRaysLeftOut;
+    }
+
+    /** True when the light emits nothing at all ({@link #L} is black wherever it is asked). */
+    public boolean isBlack() {
+        return false;
+    }
+
+    /**
+     * True when shading draws samples of this light from the worker's random generator (lights
+     * with extent): leaving out a ray whose subtree shades with this light would move later draws.
+     */
+    public boolean drawsSamples() {
+        return false;
+    }
+
+    /**
+     * True when every shadow ray towards this light that starts inside {@code h} ends inside it:
+     * every point of the light lies in {@code h} (for a directional light: its direction does not
+     * lead out of {@code h}). Lights that cannot tell say false.
+     */
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return false;
+    }
+
+    /** What the light is, for messages ("point light"). */
+    public String description() {
+        return getClass().getSimpleName();
     }
 }

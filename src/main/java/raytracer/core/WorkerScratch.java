@@ -43,6 +43,8 @@ public final class WorkerScratch {
     public long shadowRays;
     /** Samples whose radiance came out NaN or infinite: dropped, counted, and expected to stay 0. */
     public long nonFiniteSamples;
+    /** Work the scene analysis left out, counted where it would have been done: one count per {@link Skipped} kind. */
+    public final long[] skipped = new long[Skipped.KINDS];
 
     /** Scratch for a render of {@code world} that traces every term of the whole tree. */
     public WorkerScratch(World world) {

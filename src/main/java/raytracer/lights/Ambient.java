@@ -22,6 +22,11 @@ public final class Ambient extends Light {
     }
 
     @Override
+    public boolean isBlack() {
+        return radiance.isBlack();
+    }
+
+    @Override
     public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }

@@ -3,6 +3,7 @@ package raytracer.lights;
 import raytracer.core.Light;
 import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
+import raytracer.math.HalfSpace;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
@@ -108,6 +109,27 @@ public final class AreaLight extends Light {
     @Override
     public double pdf(ShadeRec sr) {
         return inverseArea;
+    }
+
+    @Override
+    public boolean isBlack() {
+        return radiance.isBlack();
+    }
+
+    /** Its samples come from the worker's random generator ({@link #generateSamples}). */
+    @Override
+    public boolean drawsSamples() {
+        return true;
+    }
+
+    @Override
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return h.contains(emitter.bounds());
+    }
+
+    @Override
+    public String description() {
+        return emitter.getClass().getSimpleName().replace("Emitter", "").toLowerCase(java.util.Locale.ROOT) + " light";
     }
 
     @Override

@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
@@ -30,6 +31,21 @@ public final class PointLight extends Light {
         double distance = wi.length();
         wi.set(wi.x / distance, wi.y / distance, wi.z / distance);
         return distance;
+    }
+
+    @Override
+    public boolean isBlack() {
+        return intensity.isBlack();
+    }
+
+    @Override
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return h.contains(px, py, pz);
+    }
+
+    @Override
+    public String description() {
+        return "point light";
     }
 
     @Override

@@ -1,10 +1,14 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
 import raytracer.core.Texture;
+import raytracer.core.World;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
 
@@ -35,5 +39,12 @@ public final class Phong extends Material {
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
+    }
+
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        return skips;
     }
 }

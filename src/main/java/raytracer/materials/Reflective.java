@@ -1,5 +1,7 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
@@ -7,8 +9,11 @@ import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
+import raytracer.core.Skipped;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
+import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
@@ -31,6 +36,8 @@ public final class Reflective extends Material {
     private final PerfectSpecular mirror;
     private final double kr;
     private final boolean schlick;
+    /** Set by {@link #simplify} when the mirror's weight kr cr is 0: its rays are counted, not traced. */
+    private boolean mirrorLeftOut;
 
     public Reflective(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp,
                       double kr, RGBColor cr, boolean schlick) {
@@ -68,6 +75,10 @@ public final class Reflective extends Material {
         if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
             return;
         }
+        if (mirrorLeftOut) {
+            scratch.skipped[Skipped.SECONDARY_RAYS]++;
+            return;
+        }
         MutableRgb weight = scratch.weight(sr.depth);
         mirror.sampleF(sr, sr.wo, 0, 0, sr.wi, weight);
         double fraction = schlick && policy.angleDependent() ? Fresnel.schlick(kr, sr.normal.dot(sr.wo)) : schlick ? kr : 1;
@@ -80,6 +91,29 @@ public final class Reflective extends Material {
         MutableRgb incoming = scratch.color(next);
         sr.world.tracer().traceRay(reflected, next, scratch, incoming);
         out.addProduct(incoming, weight, fraction);
+    }
+
+    /** True unless the mirror's weight kr cr is 0 (with Schlick's Fresnel: unless cr is black). */
+    @Override
+    public boolean needsReflection() {
+        return !mirror.isBlack();
+    }
+
+    @Override
+    public boolean tracesRays() {
+        return !mirrorLeftOut;
+    }
+
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        if (mirror.isBlack() && mayDropRays && !mirrorLeftOut) {
+            mirrorLeftOut = true;
+            skips.add(new Skip(Skipped.SECONDARY_RAYS, "mirror rays of weight 0 not traced", "material '" + name()
+                               + "': kr or its colour is 0, and no light or material of the scene draws random numbers"));
+        }
+        return skips;
     }
 
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */

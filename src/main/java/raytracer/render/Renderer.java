@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
+import raytracer.core.Skipped;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
@@ -69,7 +70,11 @@ public final class Renderer {
         long shadow = 0;
         long nonFinite = 0;
         long boxTests = 0;
+        long[] skipped = new long[Skipped.KINDS];
         for (WorkerScratch s : scratches) {
+            for (int k = 0; k < Skipped.KINDS; k++) {
+                skipped[k] += s.skipped[k];
+            }
             boxTests += s.boxTests();
             primary += s.primaryRays;
             secondary += s.secondaryRays;
@@ -77,7 +82,7 @@ public final class Renderer {
             nonFinite += s.nonFiniteSamples;
         }
         return new RenderStats(vp.hres(), vp.vres(), vp.numSamples(), workers.threads(), wall,
-                               primary, secondary, shadow, nonFinite, boxTests);
+                               primary, secondary, shadow, nonFinite, boxTests, skipped);
     }
 
     private static List<int[]> tiles(int width, int height) {

@@ -181,6 +181,22 @@ public final class Sphere extends GeometricObject {
         return true;
     }
 
+    /**
+     * A shadow ray from a lit point leaves the sphere: its origin is outside (offset by the hit's
+     * error bound, with c = |o - c|^2 - r^2 recomputed exactly when small, so c &gt; 0) and it heads
+     * away (f . d &gt; 0), so both roots are negative; a grazing ray misses (its line's closest
+     * approach is the origin itself, outside by more than the discriminant's rounding).
+     */
+    @Override
+    public boolean cannotShadowItself() {
+        return true;
+    }
+
+    @Override
+    public boolean isClosed() {
+        return true;
+    }
+
     @Override
     public BBox boundingBox() {
         return new BBox(cx - radius, cy - radius, cz - radius, cx + radius, cy + radius, cz + radius);

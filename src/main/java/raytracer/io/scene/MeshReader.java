@@ -134,6 +134,12 @@ final class MeshReader {
      * lobe. An unreadable map_Kd is a warning.
      */
     static Material fromMtl(ObjMaterial m, TextureReader textures, LoadReport report) {
+        Material material = fromMtlValues(m, textures, report);
+        material.setName(m.name());
+        return material;
+    }
+
+    private static Material fromMtlValues(ObjMaterial m, TextureReader textures, LoadReport report) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
         RGBColor ke = new RGBColor(m.ke()[0], m.ke()[1], m.ke()[2]);
