@@ -1,6 +1,9 @@
 package raytracer.accel;
 
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Objects;
+import java.util.Set;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
@@ -21,6 +24,8 @@ import raytracer.shapes.mesh.TriangleMesh;
 public final class MeshBVH extends GeometricObject implements Leaves {
     private final TriangleMesh mesh;
     private final FlatBVH bvh;
+    /** The per-face materials, as given: what hits on this mesh may be shaded with besides its own. */
+    private final List<Material> faceMaterials;
 
     /**
      * @param bvh       a tree built over the mesh's triangles, in the mesh's numbering
@@ -28,11 +33,24 @@ public final class MeshBVH extends GeometricObject implements Leaves {
      *                  this object's own material
      */
     public MeshBVH(Mesh mesh, FlatBVH bvh, List<Material> materials) {
+        this(mesh, bvh, materials, false);
+    }
+
+    private MeshBVH(Mesh mesh, FlatBVH bvh, List<Material> materials, boolean inLeafOrder) {
         if (bvh.primitiveCount() != mesh.triangleCount()) {
             throw new IllegalArgumentException("the BVH was built for another mesh");
         }
-        this.mesh = new TriangleMesh(mesh.reordered(bvh.order), materials);
+        this.mesh = new TriangleMesh(inLeafOrder ? mesh : mesh.reordered(bvh.order), materials);
         this.bvh = bvh;
+        this.faceMaterials = materials.stream().filter(Objects::nonNull).toList();
+    }
+
+    /**
+     * A mesh already renumbered in {@code bvh}'s leaf order, as {@link #mesh()} gives it (the mesh
+     * cache stores it so): no renumbering is done.
+     */
+    public static MeshBVH inLeafOrder(Mesh mesh, FlatBVH bvh, List<Material> materials) {
+        return new MeshBVH(mesh, bvh, materials, true);
     }
 
     /** The bounds of every triangle, six numbers each, as the builders take them. */
@@ -129,6 +147,14 @@ public final class MeshBVH extends GeometricObject implements Leaves {
     public BBox boundingBox() {
         return new BBox(bvh.rootBound(0), bvh.rootBound(1), bvh.rootBound(2),
                         bvh.rootBound(3), bvh.rootBound(4), bvh.rootBound(5));
+    }
+
+    /** The mesh's own material and its per-face ones. */
+    @Override
+    public List<Material> materials() {
+        Set<Material> all = new LinkedHashSet<>(super.materials());
+        all.addAll(faceMaterials);
+        return List.copyOf(all);
     }
 
     public FlatBVH bvh() {

@@ -9,6 +9,7 @@ import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
+import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 
 /**
@@ -48,7 +49,13 @@ final class OptionChecks {
         ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, o.maxDepth, pass, o.cutoff, encoding);
-        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet);
+        if (o.noCache && o.cacheDir != null) {
+            throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
+        }
+        Path meshCache = o.noCache ? null
+            : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
+        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet,
+                                 meshCache);
     }
 
     private static boolean parseView(String view) {

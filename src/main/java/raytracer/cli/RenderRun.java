@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import raytracer.accel.Aggregation;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.ViewPlane;
@@ -14,6 +15,7 @@ import raytracer.image.FalseColor;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.LoadedScene;
+import raytracer.io.scene.MeshCache;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
@@ -44,6 +46,7 @@ final class RenderRun {
             long loadStart = System.nanoTime();
             LoadedScene loaded = workers.call(this::loadScene);
             long loadNanos = System.nanoTime() - loadStart;
+            int warned = loaded.report().warnings().size();
             if (!request.quiet()) {
                 report.warnings(loaded.report().warnings());
             }
@@ -59,6 +62,11 @@ final class RenderRun {
                 return null;
             });
             long prepareNanos = System.nanoTime() - prepareStart;
+            if (!request.quiet()) {
+                // what preparing found: a cache entry that failed its checksum, one that could not be written
+                List<String> warnings = loaded.report().warnings();
+                report.warnings(warnings.subList(warned, warnings.size()));
+            }
             if (request.costView()) {
                 world.setTracer(BvhCost::new);
             }
@@ -113,7 +121,7 @@ final class RenderRun {
 
     private LoadedScene loadScene() throws SceneException, IOException {
         if (request.scene() != null) {
-            return SceneLoader.load(request.scene());
+            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache()));
         }
         try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
             if (in == null) {

@@ -60,8 +60,9 @@ final class RunReport {
         err.println();
         load.statistics().forEach(line -> err.println("stats: " + line));
         boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
-        err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
-                   prepareNanos / 1e9, s.seconds());
+        err.printf("stats: prepare (%s) %.3f s", topLevelBvh ? "top-level BVH" : "objects in a list", prepareNanos / 1e9);
+        load.prepareTimings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
+        err.printf(", render %.3f s%n", s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
                    s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
         err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
