@@ -38,6 +38,8 @@ public final class Reflective extends Material {
     private final boolean schlick;
     /** Set by {@link #simplify} when the mirror's weight kr cr is 0: its rays are counted, not traced. */
     private boolean mirrorLeftOut;
+    /** The max depth when the mirror was left out (the analysis may cut it after): the rays counted are those it allowed. */
+    private int leftOutBelow;
 
     public Reflective(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp,
                       double kr, RGBColor cr, boolean schlick) {
@@ -72,11 +74,14 @@ public final class Reflective extends Material {
         int next = sr.depth + 1;
         WorkerScratch scratch = sr.scratch;
         RayTreePolicy policy = scratch.policy;
-        if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
+        if (mirrorLeftOut) {
+            // counted where the ray would have been traced: within the depth, and of weight 0 only with no cutoff
+            if (next <= leftOutBelow && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, 0, 0, 0)) {
+                scratch.skipped[Skipped.SECONDARY_RAYS]++;
+            }
             return;
         }
-        if (mirrorLeftOut) {
-            scratch.skipped[Skipped.SECONDARY_RAYS]++;
+        if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
             return;
         }
         MutableRgb weight = scratch.weight(sr.depth);
@@ -110,6 +115,7 @@ public final class Reflective extends Material {
         lighting = lighting.simplified(world, name(), skips);
         if (mirror.isBlack() && mayDropRays && !mirrorLeftOut) {
             mirrorLeftOut = true;
+            leftOutBelow = world.viewPlane().maxDepth();
             skips.add(new Skip(Skipped.SECONDARY_RAYS, "mirror rays of weight 0 not traced", "material '" + name()
                                + "': kr or its colour is 0, and no light or material of the scene draws random numbers"));
         }
