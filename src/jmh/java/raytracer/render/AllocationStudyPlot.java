@@ -14,16 +14,20 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
+import org.apache.commons.math3.distribution.TDistribution;
 import org.yaml.snakeyaml.Yaml;
 import raytracer.image.chart.Bar;
 import raytracer.image.chart.BarChart;
 
 /**
  * The allocation study's plot and table (docs/performance.md), from the JSON files JMH wrote for
- * {@link AllocationStudyBenchmark} ({@code -rf json -rff FILE}), one file or more per JVM and
- * collector: grouped bars of throughput with JMH's error (99.9% confidence half-width), one panel
- * per workload, and a Markdown table of throughput, allocation and collection on standard output,
- * with the speed-ups of reuse over the other modes.
+ * {@link AllocationStudyBenchmark} ({@code -rf json -rff FILE}). The files may hold the same
+ * configuration (workload, threads, JVM, collector, mode) more than once, one round each
+ * (tools/allocation-study): its iterations are pooled, and the error recomputed over all of them as
+ * JMH computes it for one file, the half-width of the 99.9% confidence interval of the mean
+ * (Student's t). Draws grouped bars of throughput with that error, one panel per workload, and
+ * prints a Markdown table of throughput, allocation and collection, and the speed-ups of reuse
+ * over the other modes.
  *
  * <pre>java -cp ... raytracer.render.AllocationStudyPlot RESULTS_FOLDER OUT.png</pre>
  */
@@ -33,9 +37,19 @@ public final class AllocationStudyPlot {
     private AllocationStudyPlot() {
     }
 
-    /** One benchmark result: what ran where, and what JMH measured. */
-    record Result(String workload, int threads, String jvm, String gc, String mode, double score, double error,
-                  String unit, double bytesPerOp, double allocationRate, double gcCount, double gcTime) {
+    /** One configuration measured in one file: what ran where, and what JMH measured. */
+    record Run(String workload, int threads, String jvm, String gc, String mode, List<Double> iterations, String unit,
+               double bytesPerOp, double allocationRate, double gcCount, double gcMillis, double seconds) {
+
+        String key() {
+            return workload + "|" + threads + "|" + jvm + "|" + gc + "|" + mode;
+        }
+    }
+
+    /** A configuration over all its runs. */
+    record Result(String workload, int threads, String jvm, String gc, String mode, int forks, int iterations,
+                  double score, double error, String unit, double bytesPerOp, double allocationRate,
+                  double gcPerSecond, double gcPercent) {
 
         String category() {
             return jvm + " " + gc + ", " + threads + (threads == 1 ? " thread" : " threads");
@@ -47,16 +61,17 @@ public final class AllocationStudyPlot {
             System.err.println("usage: AllocationStudyPlot RESULTS_FOLDER OUT.png  (the folder holds JMH's JSON files)");
             System.exit(2);
         }
-        List<Result> results = new ArrayList<>();
+        List<Run> runs = new ArrayList<>();
         try (Stream<Path> files = Files.list(Path.of(args[0]))) {
             for (Path file : files.filter(f -> f.toString().endsWith(".json")).sorted().toList()) {
-                results.addAll(read(file));
+                runs.addAll(read(file));
             }
         }
-        if (results.isEmpty()) {
+        if (runs.isEmpty()) {
             System.err.println("no AllocationStudyBenchmark results in " + args[0]);
             System.exit(1);
         }
+        List<Result> results = merge(runs);
         results.sort(Comparator.comparing(Result::workload).reversed().thenComparing(Result::threads)
                          .thenComparing(Result::jvm).thenComparing(Result::gc)
                          .thenComparing(r -> MODES.indexOf(r.mode())));
@@ -65,9 +80,9 @@ public final class AllocationStudyPlot {
         System.out.print(speedUps(results));
     }
 
-    /** The study's results in one JSON file of JMH's. */
-    static List<Result> read(Path file) throws IOException {
-        List<Result> results = new ArrayList<>();
+    /** The study's runs in one JSON file of JMH's. */
+    static List<Run> read(Path file) throws IOException {
+        List<Run> runs = new ArrayList<>();
         Object root = new Yaml().load(Files.readString(file)); // JSON is YAML
         if (!(root instanceof List<?> list)) {
             throw new IOException(file + ": not a JSON array of JMH results");
@@ -84,12 +99,69 @@ public final class AllocationStudyPlot {
             Map<?, ?> secondary = (Map<?, ?>) r.get("secondaryMetrics");
             boolean frame = method.equals("frame");
             int threads = frame ? Integer.parseInt((String) params.get("threads")) : ((Number) r.get("threads")).intValue();
-            results.add(new Result(frame ? "frame" : "pixel", threads, "JDK " + major((String) r.get("jdkVersion")),
-                                   collector((List<?>) r.get("jvmArgs")), (String) params.get("mode"),
-                                   number(primary.get("score")), number(primary.get("scoreError")),
-                                   (String) primary.get("scoreUnit"), metric(secondary, "gc.alloc.rate.norm"),
-                                   metric(secondary, "gc.alloc.rate"), metric(secondary, "gc.count"),
-                                   metric(secondary, "gc.time")));
+            List<Double> iterations = new ArrayList<>();
+            for (Object fork : (List<?>) primary.get("rawData")) {
+                for (Object score : (List<?>) fork) {
+                    iterations.add(number(score));
+                }
+            }
+            double seconds = iterations.size() * seconds((String) r.get("measurementTime"));
+            runs.add(new Run(frame ? "frame" : "pixel", threads, "JDK " + major((String) r.get("jdkVersion")),
+                             collector((List<?>) r.get("jvmArgs")), (String) params.get("mode"), iterations,
+                             (String) primary.get("scoreUnit"), metric(secondary, "gc.alloc.rate.norm"),
+                             metric(secondary, "gc.alloc.rate"), metric(secondary, "gc.count"),
+                             metric(secondary, "gc.time"), seconds));
+        }
+        return runs;
+    }
+
+    /** JMH's iteration time, "2 s" or "500 ms", in seconds. */
+    private static double seconds(String time) {
+        String[] parts = time.trim().split(" ");
+        double value = Double.parseDouble(parts[0]);
+        return switch (parts[1]) {
+            case "s" -> value;
+            case "ms" -> value / 1e3;
+            case "us" -> value / 1e6;
+            default -> throw new IllegalArgumentException("unknown time unit in '" + time + "'");
+        };
+    }
+
+    /**
+     * Each configuration's runs pooled: the mean of all iterations and the half-width of its 99.9%
+     * confidence interval, t(0.9995, n - 1) s / sqrt(n), as JMH gives for one run; bytes per
+     * operation and allocation rate averaged over the runs; collections per second and the share
+     * of the measured time spent in collections, over all measured iterations.
+     */
+    static List<Result> merge(List<Run> runs) {
+        Map<String, List<Run>> byKey = new java.util.LinkedHashMap<>();
+        for (Run run : runs) {
+            byKey.computeIfAbsent(run.key(), k -> new ArrayList<>()).add(run);
+        }
+        List<Result> results = new ArrayList<>();
+        for (List<Run> same : byKey.values()) {
+            Run first = same.get(0);
+            List<Double> all = new ArrayList<>();
+            double bytes = 0;
+            double rate = 0;
+            double count = 0;
+            double millis = 0;
+            double seconds = 0;
+            for (Run run : same) {
+                all.addAll(run.iterations());
+                bytes += run.bytesPerOp() / same.size();
+                rate += run.allocationRate() / same.size();
+                count += run.gcCount();
+                millis += run.gcMillis();
+                seconds += run.seconds();
+            }
+            int n = all.size();
+            double mean = all.stream().mapToDouble(Double::doubleValue).sum() / n;
+            double squares = all.stream().mapToDouble(x -> (x - mean) * (x - mean)).sum();
+            double error = n < 2 ? Double.NaN
+                : new TDistribution(n - 1).inverseCumulativeProbability(0.9995) * Math.sqrt(squares / (n - 1)) / Math.sqrt(n);
+            results.add(new Result(first.workload(), first.threads(), first.jvm(), first.gc(), first.mode(), same.size(), n,
+                                   mean, error, first.unit(), bytes, rate, count / seconds, 100 * millis / (1000 * seconds)));
         }
         return results;
     }
@@ -174,13 +246,13 @@ public final class AllocationStudyPlot {
     /** Every result as a Markdown row. */
     static String table(List<Result> results) {
         StringBuilder t = new StringBuilder();
-        t.append("| workload | threads | JVM | GC | mode | throughput | B/op | MB/s allocated | GCs | GC ms |\n");
+        t.append("| workload | threads | JVM | GC | mode | throughput (99.9% CI, n iterations) | B/op | MB/s allocated | GCs/s | GC time |\n");
         t.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
         for (Result r : results) {
-            t.append(String.format(Locale.ROOT, "| %s | %d | %s | %s | %s | %s ± %s %s | %s | %.0f | %.0f | %.0f |%n",
+            t.append(String.format(Locale.ROOT, "| %s | %d | %s | %s | %s | %s ± %s %s (%d) | %s | %.0f | %.1f | %.1f%% |%n",
                                    r.workload(), r.threads(), r.jvm(), r.gc(), r.mode(), significant(r.score()),
-                                   significant(r.error()), r.unit(), bytes(r.bytesPerOp()), r.allocationRate(),
-                                   r.gcCount(), r.gcTime()));
+                                   significant(r.error()), r.unit(), r.iterations(),
+                                   bytes(r.bytesPerOp()), r.allocationRate(), r.gcPerSecond(), r.gcPercent()));
         }
         return t.toString();
     }
