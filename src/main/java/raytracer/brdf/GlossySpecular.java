@@ -86,4 +86,17 @@ public final class GlossySpecular implements BRDF {
     public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
+
+    public RGBColor cs() {
+        return cs;
+    }
+
+    public double exp() {
+        return exp;
+    }
+
+    /** The factor of cs cos^e(alpha): ks, or ks (e + 2) / (2 pi) for the normalised lobe. */
+    public double scale() {
+        return scale;
+    }
 }

@@ -52,4 +52,9 @@ public final class PerfectSpecular implements BRDF {
     public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
     }
+
+    /** kr cr, the weight of the mirror direction. */
+    public RGBColor reflectance() {
+        return reflectance;
+    }
 }

@@ -13,6 +13,9 @@ import raytracer.math.MutableVec3;
  * counts the rays it traced, and holds the worker's {@link RayTreePolicy}.
  */
 public final class WorkerScratch {
+    private final World world;
+    /** {@link ShadeRecSupply#FRESH}: a new hit record per ray (the allocation study), else the ones below. */
+    private final boolean freshShadeRecs;
     private final ShadeRec[] shadeRecs;
     private final Ray[] rays;
     private final MutableRgb[] colors;
@@ -53,6 +56,13 @@ public final class WorkerScratch {
 
     /** Scratch for a render of {@code world} that traces as much of the ray tree as {@code settings} ask. */
     public WorkerScratch(World world, RayTreeSettings settings) {
+        this(world, settings, ShadeRecSupply.REUSE);
+    }
+
+    /** As {@link #WorkerScratch(World, RayTreeSettings)}, with hit records from {@code supply}. */
+    public WorkerScratch(World world, RayTreeSettings settings, ShadeRecSupply supply) {
+        this.world = world;
+        this.freshShadeRecs = supply == ShadeRecSupply.FRESH;
         int levels = world.viewPlane().maxDepth() + 2;
         shadeRecs = new ShadeRec[levels];
         rays = new Ray[levels];
@@ -81,7 +91,10 @@ public final class WorkerScratch {
         policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }
 
-    /** Bounding-volume tests made by all rays of this worker so far. */
+    /**
+     * Bounding-volume tests made by all rays of this worker so far (with {@link ShadeRecSupply#FRESH},
+     * the fresh records' tests are not counted).
+     */
     public long boxTests() {
         long sum = 0;
         for (ShadeRec sr : shadeRecs) {
@@ -125,8 +138,15 @@ public final class WorkerScratch {
         return patternY[depth];
     }
 
-    /** The hit record for a ray traced at {@code depth}. */
+    /**
+     * The hit record for a ray traced at {@code depth}: this worker's own for that depth, or a new
+     * one for each call when the supply is {@link ShadeRecSupply#FRESH}. The test of a final field
+     * always goes the same way, so the reusing path pays a predicted branch and no more.
+     */
     public ShadeRec shadeRec(int depth) {
+        if (freshShadeRecs) {
+            return new ShadeRec(world, this);
+        }
         return shadeRecs[depth];
     }
 

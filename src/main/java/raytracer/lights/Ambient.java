@@ -30,4 +30,9 @@ public final class Ambient extends Light {
     public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }
+
+    /** L = ls c. */
+    public RGBColor radiance() {
+        return radiance;
+    }
 }

@@ -48,4 +48,14 @@ public final class Directional extends Light {
     public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
     }
+
+    /** The unit direction from the scene to the light. */
+    public Vector3D towardLight() {
+        return towardLight;
+    }
+
+    /** L = ls c. */
+    public RGBColor radiance() {
+        return radiance;
+    }
 }

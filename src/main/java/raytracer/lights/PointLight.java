@@ -55,4 +55,13 @@ public final class PointLight extends Light {
         double dz = pz - sr.hitPoint.z;
         out.set(intensity).scale(1 / (dx * dx + dy * dy + dz * dz));
     }
+
+    public Point3D position() {
+        return new Point3D(px, py, pz);
+    }
+
+    /** I = ls c. */
+    public RGBColor intensity() {
+        return intensity;
+    }
 }

@@ -15,16 +15,19 @@ import raytracer.math.MutableRgb;
 public final class Matte extends Material {
     private final double ka;
     private final double kd;
+    private RGBColor cd;
     private DirectLighting lighting;
 
     public Matte(double ka, double kd, RGBColor cd) {
         this.ka = ka;
         this.kd = kd;
+        this.cd = cd;
         this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), null);
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), null);
     }
 
@@ -43,5 +46,18 @@ public final class Matte extends Material {
         List<Skip> skips = new ArrayList<>();
         lighting = lighting.simplified(world, name(), skips);
         return skips;
+    }
+
+    public double ka() {
+        return ka;
+    }
+
+    public double kd() {
+        return kd;
+    }
+
+    /** The diffuse colour, or null when a texture replaced it. */
+    public RGBColor cd() {
+        return cd;
     }
 }

@@ -16,18 +16,21 @@ import raytracer.math.MutableRgb;
 public final class Phong extends Material {
     private final double ka;
     private final double kd;
+    private RGBColor cd;
     private final GlossySpecular specular;
     private DirectLighting lighting;
 
     public Phong(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, boolean normalized) {
         this.ka = ka;
         this.kd = kd;
+        this.cd = cd;
         this.specular = new GlossySpecular(ks, cs, exp, normalized);
         this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
@@ -46,5 +49,22 @@ public final class Phong extends Material {
         List<Skip> skips = new ArrayList<>();
         lighting = lighting.simplified(world, name(), skips);
         return skips;
+    }
+
+    public double ka() {
+        return ka;
+    }
+
+    public double kd() {
+        return kd;
+    }
+
+    /** The diffuse colour, or null when a texture replaced it. */
+    public RGBColor cd() {
+        return cd;
+    }
+
+    public GlossySpecular specular() {
+        return specular;
     }
 }

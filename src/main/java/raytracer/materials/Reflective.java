@@ -31,6 +31,7 @@ public final class Reflective extends Material {
     private Background reflectionMap;
     private final double ka;
     private final double kd;
+    private RGBColor cd;
     private final GlossySpecular specular;
     private DirectLighting lighting;
     private final PerfectSpecular mirror;
@@ -47,6 +48,7 @@ public final class Reflective extends Material {
         this.schlick = schlick;
         this.ka = ka;
         this.kd = kd;
+        this.cd = cd;
         this.specular = new GlossySpecular(ks, cs, exp, false);
         this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
         this.mirror = new PerfectSpecular(schlick ? 1 : kr, cr);
@@ -54,6 +56,7 @@ public final class Reflective extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
@@ -125,5 +128,36 @@ public final class Reflective extends Material {
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
+    }
+
+    /** The object's own environment for its reflections, or null for the scene's. */
+    public Background reflectionMap() {
+        return reflectionMap;
+    }
+
+    public double ka() {
+        return ka;
+    }
+
+    public double kd() {
+        return kd;
+    }
+
+    /** The diffuse colour, or null when a texture replaced it. */
+    public RGBColor cd() {
+        return cd;
+    }
+
+    public GlossySpecular specular() {
+        return specular;
+    }
+
+    public PerfectSpecular mirror() {
+        return mirror;
+    }
+
+    /** Whether the reflected fraction follows Schlick's approximation (kr at normal incidence). */
+    public boolean schlick() {
+        return schlick;
     }
 }

@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
+import raytracer.core.ShadeRecSupply;
 import raytracer.core.Skipped;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -34,15 +35,22 @@ public final class Renderer {
     private final RayTreeSettings rayTree;
     private final Workers workers;
     private final long seed;
+    private final ShadeRecSupply shadeRecs;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
 
     /** Renders {@code world}, tracing as much of each ray tree as {@code rayTree} asks, on {@code workers}. */
     public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed) {
+        this(world, rayTree, workers, seed, ShadeRecSupply.REUSE);
+    }
+
+    /** As above, with the workers' hit records from {@code shadeRecs} (the allocation study's alternative). */
+    public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed, ShadeRecSupply shadeRecs) {
         this.world = world;
         this.rayTree = rayTree;
         this.workers = workers;
         this.seed = seed;
+        this.shadeRecs = shadeRecs;
     }
 
     /** Fraction of pixels finished, for progress reports from another thread. */
@@ -58,7 +66,7 @@ public final class Renderer {
         pixelsDone.set(0);
         Queue<WorkerScratch> scratches = new ConcurrentLinkedQueue<>();
         ThreadLocal<WorkerScratch> scratch = ThreadLocal.withInitial(() -> {
-            WorkerScratch s = new WorkerScratch(world, rayTree);
+            WorkerScratch s = new WorkerScratch(world, rayTree, shadeRecs);
             scratches.add(s);
             return s;
         });
