@@ -104,26 +104,42 @@ public final class FlatBVH {
             int count = stackCounts[top];
             // descend to a leaf, or until the ray misses both children
             while (count == 0) {
+                // the node's links and counts are read before its boxes are tested, so that the
+                // two arrays are fetched together rather than one after the other
+                int at = BvhNodes.childAt(link, BvhNodes.LEFT);
+                int leftLink = children[at];
+                int leftCount = children[at + 1];
+                int rightLink = children[at + 2];
+                int rightCount = children[at + 3];
                 boxTests += 2;
                 double tLeft = slab.entry(bounds, BvhNodes.boxAt(link, BvhNodes.LEFT), tHit);
                 double tRight = slab.entry(bounds, BvhNodes.boxAt(link, BvhNodes.RIGHT), tHit);
                 boolean enterLeft = tLeft < Double.POSITIVE_INFINITY;
                 boolean enterRight = tRight < Double.POSITIVE_INFINITY;
-                if (!enterLeft && !enterRight) {
+                if (enterLeft && enterRight) {
+                    // the closest hit goes first into the child the ray enters first, any hit into the left
+                    if (closest && tRight < tLeft) {
+                        stackLinks[top] = leftLink;
+                        stackCounts[top] = leftCount;
+                        stackEntries[top++] = tLeft;
+                        link = rightLink;
+                        count = rightCount;
+                    } else {
+                        stackLinks[top] = rightLink;
+                        stackCounts[top] = rightCount;
+                        stackEntries[top++] = tRight;
+                        link = leftLink;
+                        count = leftCount;
+                    }
+                } else if (enterLeft) {
+                    link = leftLink;
+                    count = leftCount;
+                } else if (enterRight) {
+                    link = rightLink;
+                    count = rightCount;
+                } else {
                     break;
                 }
-                // the closest hit goes first into the child the ray enters first
-                int next = !enterLeft || (closest && enterRight && tRight < tLeft) ? BvhNodes.RIGHT : BvhNodes.LEFT;
-                if (enterLeft && enterRight) {
-                    int other = BvhNodes.childAt(link, 1 - next);
-                    stackLinks[top] = children[other];
-                    stackCounts[top] = children[other + 1];
-                    stackEntries[top] = next == BvhNodes.LEFT ? tRight : tLeft;
-                    top++;
-                }
-                int child = BvhNodes.childAt(link, next);
-                link = children[child];
-                count = children[child + 1];
             }
             if (count > 0) {
                 if (closest && leaves.hit(link, count, ray, sr)) {
