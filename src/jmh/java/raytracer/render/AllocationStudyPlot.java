@@ -108,8 +108,8 @@ public final class AllocationStudyPlot {
             double seconds = iterations.size() * seconds((String) r.get("measurementTime"));
             runs.add(new Run(frame ? "frame" : "pixel", threads, "JDK " + major((String) r.get("jdkVersion")),
                              collector((List<?>) r.get("jvmArgs")), (String) params.get("mode"), iterations,
-                             (String) primary.get("scoreUnit"), metric(secondary, "gc.alloc.rate.norm"),
-                             metric(secondary, "gc.alloc.rate"), metric(secondary, "gc.count"),
+                             (String) primary.get("scoreUnit"), iterationMean(secondary, "gc.alloc.rate.norm"),
+                             iterationMean(secondary, "gc.alloc.rate"), metric(secondary, "gc.count"),
                              metric(secondary, "gc.time"), seconds));
         }
         return runs;
@@ -195,6 +195,26 @@ public final class AllocationStudyPlot {
             return n.doubleValue();
         }
         return Double.parseDouble(String.valueOf(value));
+    }
+
+    /**
+     * The mean of a rate's recorded iterations. JMH's own score divides by the iterations of the
+     * primary metric, so an iteration in which the GC profiler recorded nothing counts as 0 there.
+     */
+    private static double iterationMean(Map<?, ?> secondary, String name) {
+        Object m = secondary == null ? null : secondary.get(name);
+        if (m == null) {
+            return 0;
+        }
+        double sum = 0;
+        int n = 0;
+        for (Object fork : (List<?>) ((Map<?, ?>) m).get("rawData")) {
+            for (Object value : (List<?>) fork) {
+                sum += number(value);
+                n++;
+            }
+        }
+        return n == 0 ? number(((Map<?, ?>) m).get("score")) : sum / n;
     }
 
     private static double metric(Map<?, ?> secondary, String name) {
