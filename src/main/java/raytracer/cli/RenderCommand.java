@@ -82,7 +82,8 @@ public final class RenderCommand implements Callable<Integer> {
             description = "Render N times in this JVM and report each (benchmarking: the first render includes JIT warm-up).")
     int repeat = 1;
 
-    @Option(names = "--stats", description = "Print a breakdown: load steps, render time, rays by kind, BVH tests per ray, peak heap.")
+    @Option(names = "--stats", description = "Print a breakdown: load steps (parse, BVH build, mesh cache), render time, "
+            + "rays by kind, BVH tests per ray, peak heap, and what the scene analysis left out and why.")
     boolean stats;
 
     @Option(names = {"-q", "--quiet"}, description = "No progress bar and no summary line.")
