@@ -36,18 +36,10 @@ public abstract class Light {
 
     /**
      * How many samples this light takes per shaded point at most: 1 for point and directional
-     * lights, the configured number for area lights (Suffern, chapter 18).
+     * lights, the configured number for area lights (Suffern, chapter 18). Their values come from
+     * the worker's {@link PixelSamples}, stratified across the pixel's samples.
      */
     public int sampleCount() {
-        return 1;
-    }
-
-    /**
-     * Draws this light's sample pattern for the hit {@code sr} into {@code sr.scratch.lightX} and
-     * {@code lightY} and returns how many samples to take. Lights without extent draw nothing and
-     * take one.
-     */
-    public int generateSamples(ShadeRec sr) {
         return 1;
     }
 

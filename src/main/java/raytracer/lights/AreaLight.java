@@ -1,7 +1,6 @@
 package raytracer.lights;
 
 import raytracer.core.Light;
-import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
@@ -58,18 +57,6 @@ public final class AreaLight extends Light {
     @Override
     public int sampleCount() {
         return samples;
-    }
-
-    /**
-     * A fresh stratified pattern per light and point from the image's sampler (Suffern, section
-     * 18.5), of as many samples as the ray tree's policy gives a hit at this depth.
-     */
-    @Override
-    public int generateSamples(ShadeRec sr) {
-        Sampler sampler = sr.world.viewPlane().sampler();
-        int n = sampler.supportedCount(sr.scratch.policy.lightSamples(sr.depth, samples));
-        sampler.generate(n, sr.scratch.rng, sr.scratch.lightX, sr.scratch.lightY);
-        return n;
     }
 
     /** Samples the emitter: the point and its normal are kept in {@code sr} for {@link #G}. */

@@ -4,7 +4,7 @@ import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.core.Background;
 import raytracer.core.Material;
-import raytracer.core.Sampler;
+import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
@@ -61,7 +61,8 @@ public final class GlossyReflector extends Material {
 
     /**
      * Adds the average over the glossy rays of the radiance each brings back times its weight
-     * f cos(theta_i) / pdf (Suffern, chapter 25).
+     * f cos(theta_i) / pdf (Suffern, chapter 25). The directions come from the glossy dimension of
+     * this hit's path, stratified across the pixel's samples, and each ray names its own path.
      */
     private void reflectGlossy(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
@@ -69,11 +70,8 @@ public final class GlossyReflector extends Material {
         if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {
             return;
         }
-        Sampler sampler = sr.world.viewPlane().sampler();
-        int n = sampler.supportedCount(samples);
-        double[] xs = scratch.patternX(sr.depth, n);
-        double[] ys = scratch.patternY(sr.depth);
-        sampler.generate(n, scratch.rng, xs, ys);
+        int n = sr.world.viewPlane().sampler().supportedCount(samples);
+        PixelSamples pattern = scratch.samples;
         MutableVec3 wi = sr.wi;
         MutableRgb weight = scratch.weight(sr.depth);
         MutableRgb incoming = scratch.color(next);
@@ -81,13 +79,15 @@ public final class GlossyReflector extends Material {
         double g = 0;
         double b = 0;
         for (int i = 0; i < n; i++) {
-            if (!specular.sampleF(sr, sr.wo, xs[i], ys[i], wi, weight)) {
+            pattern.get2D(sr.depth, PixelSamples.GLOSSY, i, n);
+            if (!specular.sampleF(sr, sr.wo, pattern.u, pattern.v, wi, weight)) {
                 continue; // below the surface: zero, but it counts in the average
             }
             if (!scratch.policy.recordBranchWeight(sr.depth, weight.r / n, weight.g / n, weight.b / n)) {
                 continue;
             }
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
+            pattern.branch(sr.depth, PixelSamples.GLOSSY_RAY, i, n);
             scratch.secondaryRays++;
             scratch.setEnvironment(next, reflectionMap);
             sr.world.tracer().traceRay(ray, next, scratch, incoming);

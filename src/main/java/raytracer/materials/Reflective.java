@@ -5,6 +5,7 @@ import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
 import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
 import raytracer.core.Texture;
@@ -75,6 +76,7 @@ public final class Reflective extends Material {
             return;
         }
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
+        scratch.samples.branch(sr.depth, PixelSamples.REFLECTED, 0, 1);
         scratch.secondaryRays++;
         scratch.setEnvironment(next, policy.reflectedEnvironment(sr.depth, reflectionMap));
         MutableRgb incoming = scratch.color(next);

@@ -7,8 +7,8 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
+import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
-import raytracer.core.Sampler;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
@@ -16,15 +16,14 @@ import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
-import raytracer.math.Rng;
 import raytracer.math.SampleMapping;
 import raytracer.math.MutableVec3;
 
 /**
  * Renders a prepared {@link World} on the run's {@link Workers}: the image is cut into square tiles,
  * the tile list is split in halves until one tile remains per task, and each worker thread keeps one
- * {@link WorkerScratch}. Every pixel reseeds the worker's generator from (seed, x, y), so the pixels
- * do not depend on the thread count or the order in which tiles finish.
+ * {@link WorkerScratch}. Every sample value is a function of (seed, pixel, sample index, dimension),
+ * so the pixels do not depend on the thread count or the order in which tiles finish.
  */
 public final class Renderer {
     public static final int TILE_SIZE = 32;
@@ -125,25 +124,39 @@ public final class Renderer {
         }
     }
 
-    /** Averages the samples of pixel (x, y) (Suffern, listing 4.2), seeded by the pixel alone. */
+    /**
+     * Averages the samples of pixel (x, y) (Suffern, listing 4.2). Each sample's values, from its
+     * position in the pixel to its last light sample, are functions of (seed, pixel, sample index,
+     * dimension) alone ({@link PixelSamples}).
+     */
     void renderPixel(int x, int y, WorkerScratch s, Film film) {
         ViewPlane vp = world.viewPlane();
         Camera camera = world.camera();
         Tracer tracer = world.tracer();
-        Sampler sampler = vp.sampler();
+        boolean lens = camera.needsLensSamples();
+        PixelSamples samples = s.samples;
         int n = vp.numSamples();
-        s.rng.reseed(Rng.pixelSeed(seed, x, y));
-        sampler.generate(n, s.rng, s.sampleX, s.sampleY);
-        if (camera.needsLensSamples()) {
-            lensSamples(n, sampler, s);
-        }
+        samples.startPixel(seed, x, y);
         Ray ray = s.ray(0);
         MutableRgb sample = s.color(0);
+        MutableVec3 disk = s.diskScratch;
         double r = 0;
         double g = 0;
         double b = 0;
         for (int i = 0; i < n; i++) {
-            camera.generateRay(vp, x + s.sampleX[i], y + s.sampleY[i], s.lensX[i], s.lensY[i], ray);
+            samples.startSample(i);
+            s.rng.reseed(samples.sampleKey(i));
+            samples.get2D(0, PixelSamples.PIXEL, 0, 1);
+            double px = x + samples.u;
+            double py = y + samples.v;
+            if (lens) {
+                // the concentric map keeps the pattern's strata (Suffern, section 10.4)
+                samples.get2D(0, PixelSamples.LENS, 0, 1);
+                SampleMapping.toUnitDisk(samples.u, samples.v, disk);
+                camera.generateRay(vp, px, py, disk.x, disk.y, ray);
+            } else {
+                camera.generateRay(vp, px, py, 0, 0, ray);
+            }
             s.primaryRays++;
             tracer.traceRay(ray, 0, s, sample);
             if (Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b)) {
@@ -155,24 +168,5 @@ public final class Renderer {
             }
         }
         film.set(x, y, r / n, g / n, b / n);
-    }
-
-    /**
-     * Lens samples from the same pattern, shuffled so they do not correlate with the pixel samples
-     * (Suffern, section 10.4), then mapped to the unit disk.
-     */
-    private static void lensSamples(int n, Sampler sampler, WorkerScratch s) {
-        sampler.generate(n, s.rng, s.lensX, s.lensY);
-        MutableVec3 disk = s.diskScratch;
-        for (int i = n - 1; i >= 0; i--) {
-            int j = s.rng.nextInt(i + 1);
-            double lx = s.lensX[j];
-            double ly = s.lensY[j];
-            s.lensX[j] = s.lensX[i];
-            s.lensY[j] = s.lensY[i];
-            SampleMapping.toUnitDisk(lx, ly, disk);
-            s.lensX[i] = disk.x;
-            s.lensY[i] = disk.y;
-        }
     }
 }
