@@ -14,15 +14,14 @@ import raytracer.math.Hashes;
  *
  * <p>Stratified across the pixel: in each dimension the pixel's {@code spp} samples share one
  * pattern of spp * B points, where B is how many values one sample takes there (a light's samples
- * per hit, times the glossy rays of the hits above it). Sample i takes B of them, so a 16-spp pixel
- * with one light sample per hit puts its 16 light samples on one stratified 16-point pattern over
- * the light. Patterns of different dimensions are shuffled independently (Suffern's shuffled
- * indices, section 5.3; "padding", Kollig and Keller 2002), so no dimension's strata line up with
- * another's. For a pointwise sampler (Sobol') sample i takes the aligned block p(i) B .. p(i) B +
- * B - 1 of the sequence, p a hashed permutation of the samples (Kensler 2013): each such block of
- * a (0,2)-sequence is itself stratified, so the B light samples of one hit are too. Where spp * B
- * would exceed {@link #maxPoints}, each of the B values gets a dimension of its own, stratified
- * across the pixel's samples only.
+ * per hit, times the glossy rays of the hits above it). Sample i takes the block p(i) B .. p(i) B +
+ * B - 1 of it, p a permutation of the samples. So a 16-spp pixel with one light sample per hit puts
+ * its 16 light samples on one stratified 16-point pattern over the light. Pattern and permutation
+ * are picked from the render's {@link SampleTables} by a hash of (pixel, dimension): different
+ * dimensions are shuffled independently (Suffern's shuffled indices, section 5.3; "padding",
+ * Kollig and Keller 2002), so no dimension's strata line up with another's. Where spp * B would
+ * exceed {@link #MAX_POINTS}, each of the B values gets a dimension of its own, stratified across
+ * the pixel's samples only.
  */
 public final class PixelSamples {
     /** Purposes of a dimension. */
@@ -38,46 +37,43 @@ public final class PixelSamples {
     public static final int GLOSSY_RAY = 3;
     private static final int INHERITED = 4;
     private static final long BRANCH = 0x5bd1e995L << 32;
+    private static final long PURPOSE = 0xC2B2AE3D27D4EB4FL;
 
-    /** Largest pattern drawn whole for a book sampler; pointwise samplers go further at no cost. */
-    static final int MAX_SET_POINTS = 1 << 12;
-    static final int MAX_SEQUENCE_POINTS = 1 << 24;
+    /** Largest pattern a dimension's samples share. */
+    static final int MAX_POINTS = 1 << 12;
 
-    private final Sampler sampler;
-    private final boolean pointwise;
-    private final int spp;
-    private final int maxPoints;
-    private final SampleSets sets;
-
+    private SampleTables tables;
+    private int spp;
     private long pixelKey;
     private int sample;
     /** Per depth: the path's key, the offset of this ray among the B of its sample, and B. */
     private final long[] pathKey;
     private final int[] pathOffset;
     private final int[] pathBlock;
+    /** The last patterns used, by size: most renders use one or two sizes. */
+    private SampleTables.Patterns recent;
+    private SampleTables.Patterns other;
 
     /** The last value drawn by {@link #get2D}, each in [0, 1). */
     public double u;
     public double v;
 
-    /** For renders of {@code spp} samples per pixel from {@code sampler}, with rays down to {@code levels - 1}. */
-    public PixelSamples(Sampler sampler, int spp, int levels) {
-        this.sampler = sampler;
-        this.pointwise = sampler.pointwise();
-        this.spp = spp;
-        this.maxPoints = pointwise ? MAX_SEQUENCE_POINTS : MAX_SET_POINTS;
-        this.sets = pointwise ? null : new SampleSets(sampler);
+    /** For rays traced down to depth {@code levels - 1}. */
+    public PixelSamples(int levels) {
         pathKey = new long[levels];
         pathOffset = new int[levels];
         pathBlock = new int[levels];
     }
 
-    /** Starts pixel (x, y) of a render seeded {@code seed}. */
-    public void startPixel(long seed, int x, int y) {
-        pixelKey = Hashes.mix(seed, (long) y << 32 | (x & 0xffffffffL));
-        if (sets != null) {
-            sets.clear();
+    /** Starts pixel (x, y) of the render whose sets are {@code tables}. */
+    public void startPixel(SampleTables tables, int x, int y) {
+        if (tables != this.tables) {
+            this.tables = tables;
+            spp = tables.spp();
+            recent = null;
+            other = null;
         }
+        pixelKey = Hashes.mix(tables.seed(), (long) y << 32 | (x & 0xffffffffL));
     }
 
     /** Starts sample {@code i} of the pixel (0 &lt;= i &lt; spp): its camera ray is the root of the path. */
@@ -101,7 +97,7 @@ public final class PixelSamples {
         long key = Hashes.mix(pathKey[depth], BRANCH + slot);
         long block = (long) pathBlock[depth] * k;
         long offset = (long) pathOffset[depth] * k + j;
-        if (block * spp > maxPoints) {
+        if (block * spp > MAX_POINTS && block > 1) {
             key = Hashes.mix(key, offset);
             block = 1;
             offset = 0;
@@ -127,25 +123,32 @@ public final class PixelSamples {
      * fewer uses the first ones).
      */
     public void get2D(int depth, int purpose, int s, int m) {
-        long key = Hashes.mix(pathKey[depth], purpose);
-        long block = (long) pathBlock[depth] * m;
-        long offset = (long) pathOffset[depth] * m + s;
-        if (block * spp > maxPoints) {
+        long key = pathKey[depth] ^ purpose * PURPOSE;
+        int block = pathBlock[depth] * m;
+        int offset = pathOffset[depth] * m + s;
+        if ((long) block * spp > MAX_POINTS && block > 1) {
             key = Hashes.mix(key, offset);
             block = 1;
             offset = 0;
         }
-        long dimension = Hashes.mix(pixelKey, key);
-        if (pointwise) {
-            int index = Hashes.permute(sample, spp, (int) dimension) * (int) block + (int) offset;
-            long bits = sampler.point(index, Hashes.mix(dimension));
-            u = (bits >>> 32) * 0x1.0p-32;
-            v = (bits & 0xffffffffL) * 0x1.0p-32;
-        } else {
-            int set = sets.find(dimension, spp * (int) block);
-            int at = (sample * (int) block + (int) offset) % sets.size(set);
-            u = sets.x(set)[at];
-            v = sets.y(set)[at];
+        long dimension = Hashes.mix(pixelKey ^ key);
+        SampleTables.Patterns p = patterns(spp * block);
+        int at = ((int) dimension & p.mask()) * p.size() + tables.permuted((int) (dimension >>> 32), sample) * block + offset;
+        u = p.xs()[at];
+        v = p.ys()[at];
+    }
+
+    private SampleTables.Patterns patterns(int size) {
+        SampleTables.Patterns p = recent;
+        if (p != null && p.size() == size) {
+            return p;
         }
+        p = other;
+        if (p == null || p.size() != size) {
+            p = tables.patterns(size);
+        }
+        other = recent;
+        recent = p;
+        return p;
     }
 }

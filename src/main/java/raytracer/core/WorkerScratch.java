@@ -56,7 +56,10 @@ public final class WorkerScratch {
             colors[i] = new MutableRgb();
             weights[i] = new MutableRgb();
         }
-        samples = new PixelSamples(world.viewPlane().sampler(), world.viewPlane().numSamples(), levels);
+        samples = new PixelSamples(levels);
+        // a scratch used without a renderer (a test tracing one ray) draws pixel (0, 0), sample 0, seed 0
+        samples.startPixel(new SampleTables(world.viewPlane().sampler(), world.viewPlane().numSamples(), 0), 0, 0);
+        samples.startSample(0);
         environments = new Background[levels];
         policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }

@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
+import raytracer.core.SampleTables;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
@@ -32,6 +33,8 @@ public final class Renderer {
     private final RayTreeSettings rayTree;
     private final Workers workers;
     private final long seed;
+    /** The render's sample sets, made again if the view plane's sampler or sample count changes. */
+    private SampleTables tables;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
 
@@ -41,6 +44,17 @@ public final class Renderer {
         this.rayTree = rayTree;
         this.workers = workers;
         this.seed = seed;
+        tables();
+    }
+
+    private SampleTables tables() {
+        ViewPlane vp = world.viewPlane();
+        SampleTables t = tables;
+        if (t == null || t.sampler() != vp.sampler() || t.spp() != vp.numSamples()) {
+            t = new SampleTables(vp.sampler(), vp.numSamples(), seed);
+            tables = t;
+        }
+        return t;
     }
 
     /** Fraction of pixels finished, for progress reports from another thread. */
@@ -50,6 +64,7 @@ public final class Renderer {
 
     /** Renders the whole image into {@code film} and returns what it cost. */
     public RenderStats render(Film film) {
+        tables(); // made here, before the workers start, if the view plane changed since
         ViewPlane vp = world.viewPlane();
         List<int[]> tiles = tiles(vp.hres(), vp.vres());
         pixelsTotal = (long) vp.hres() * vp.vres();
@@ -136,7 +151,7 @@ public final class Renderer {
         boolean lens = camera.needsLensSamples();
         PixelSamples samples = s.samples;
         int n = vp.numSamples();
-        samples.startPixel(seed, x, y);
+        samples.startPixel(tables(), x, y);
         Ray ray = s.ray(0);
         MutableRgb sample = s.color(0);
         MutableVec3 disk = s.diskScratch;

@@ -26,14 +26,17 @@ public final class Sobol implements Sampler {
         }
     }
 
+    /** Blocks of 2^k consecutive points are stratified: kept in order, not shuffled. */
     @Override
-    public boolean pointwise() {
+    public boolean keepsOrder() {
         return true;
     }
 
-    /** x scrambled with the low 32 bits of {@code scramble}, y with the high ones. */
-    @Override
-    public long point(int index, long scramble) {
+    /**
+     * Point {@code index} of the sequence, x scrambled with the low 32 bits of {@code scramble} and
+     * y with the high ones, as two 32-bit fractions: x in the high half of the result.
+     */
+    static long point(int index, long scramble) {
         // the van der Corput value of i is i with its bits reversed, so reversed it is i itself
         int x = owen(index, (int) scramble);
         int y = owen(secondDimensionReversed(index), (int) (scramble >>> 32));

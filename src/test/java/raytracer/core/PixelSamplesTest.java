@@ -17,18 +17,31 @@ import raytracer.samplers.Samplers;
 class PixelSamplesTest {
     private static final int LEVELS = 4;
 
+    /** A worker's samples for a render of 16 spp from the sampler {@code name}, seeded 7. */
+    private static Worker worker(String name) {
+        return new Worker(new SampleTables(Samplers.byName(name), 16, 7), new PixelSamples(LEVELS));
+    }
+
+    private record Worker(SampleTables tables, PixelSamples p) {
+        void startPixel(int x, int y) {
+            p.startPixel(tables, x, y);
+        }
+    }
+
     /** The 2D value of sample i of pixel (x, y) in light 0's dimension at depth 0, m values per hit. */
-    private static double[] light(PixelSamples p, int x, int y, int i, int s, int m) {
-        p.startPixel(7, x, y);
+    private static double[] light(Worker w, int x, int y, int i, int s, int m) {
+        w.startPixel(x, y);
+        PixelSamples p = w.p();
         p.startSample(i);
         p.get2D(0, PixelSamples.LIGHT, s, m);
         return new double[] {p.u, p.v};
     }
 
     /** The spp * m values of one dimension of one pixel, sample by sample. */
-    private static double[][] pattern(PixelSamples p, int x, int y, int purpose, int spp, int m) {
+    private static double[][] pattern(Worker w, int x, int y, int purpose, int spp, int m) {
         double[][] points = new double[spp * m][];
-        p.startPixel(3, x, y);
+        w.startPixel(x, y);
+        PixelSamples p = w.p();
         for (int i = 0; i < spp; i++) {
             p.startSample(i);
             for (int s = 0; s < m; s++) {
@@ -60,16 +73,16 @@ class PixelSamplesTest {
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "sobol", "random", "n-rooks"})
     void aValueDoesNotDependOnWhatWasDrawnBefore(String name) {
-        Sampler sampler = Samplers.byName(name);
-        PixelSamples fresh = new PixelSamples(sampler, 16, LEVELS);
-        PixelSamples used = new PixelSamples(sampler, 16, LEVELS);
+        SampleTables tables = new SampleTables(Samplers.byName(name), 16, 7);
+        PixelSamples fresh = new PixelSamples(LEVELS);
+        PixelSamples used = new PixelSamples(LEVELS);
         for (int x = 0; x < 20; x++) {
             // the other worker has drawn other pixels, other samples of this one, other dimensions
             // and deeper paths, in another order
-            used.startPixel(7, x + 1, 4);
+            used.startPixel(tables, x + 1, 4);
             used.startSample(3);
             used.get2D(0, PixelSamples.LIGHT, 0, 1);
-            used.startPixel(7, x, 5);
+            used.startPixel(tables, x, 5);
             for (int i = 15; i >= 0; i--) {
                 used.startSample(i);
                 used.get2D(0, PixelSamples.PIXEL, 0, 1);
@@ -81,7 +94,7 @@ class PixelSamplesTest {
             for (int i = 0; i < 16; i++) {
                 used.startSample(i);
                 used.get2D(0, PixelSamples.LIGHT, 0, 1);
-                fresh.startPixel(7, x, 5);
+                fresh.startPixel(new SampleTables(Samplers.byName(name), 16, 7), x, 5);
                 fresh.startSample(i);
                 fresh.get2D(0, PixelSamples.LIGHT, 0, 1);
                 assertEquals(fresh.u, used.u, 0, name + ": pixel " + x + ", sample " + i);
@@ -93,13 +106,14 @@ class PixelSamplesTest {
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "jittered", "sobol"})
     void aPixelsSamplesFormOneStratifiedPatternPerDimension(String name) {
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
         for (int x = 0; x < 50; x++) {
             for (int purpose : new int[] {PixelSamples.PIXEL, PixelSamples.LENS, PixelSamples.LIGHT, PixelSamples.LIGHT + 2}) {
-                double[][] one = pattern(p, x, 1, purpose, 16, 1);
+                double[][] one = pattern(w, x, 1, purpose, 16, 1);
                 assertTrue(onePerCell(one, 0, 16, 4, 4), name + ": 16 samples with one value each, 4 x 4 cells, pixel " + x);
                 // 16 samples taking 4 values each: one pattern of 64 points
-                double[][] four = pattern(p, x, 1, purpose, 16, 4);
+                double[][] four = pattern(w, x, 1, purpose, 16, 4);
                 assertTrue(onePerCell(four, 0, 64, 8, 8), name + ": 16 x 4 values, 8 x 8 cells, pixel " + x);
             }
         }
@@ -110,9 +124,10 @@ class PixelSamplesTest {
     void theStrataAreFineInBothDirections(String name) {
         // multi-jittered: one point per column and row of the 16 x 16 grid too; Sobol': every
         // elementary box of area 1/16 (16 x 1, 8 x 2, 4 x 4, 2 x 8, 1 x 16)
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
         for (int x = 0; x < 50; x++) {
-            double[][] points = pattern(p, x, 2, PixelSamples.LIGHT, 16, 1);
+            double[][] points = pattern(w, x, 2, PixelSamples.LIGHT, 16, 1);
             assertTrue(onePerCell(points, 0, 16, 16, 1) && onePerCell(points, 0, 16, 1, 16), name + ", pixel " + x);
             if (name.equals("sobol")) {
                 assertTrue(onePerCell(points, 0, 16, 8, 2) && onePerCell(points, 0, 16, 2, 8), "sobol, pixel " + x);
@@ -125,10 +140,10 @@ class PixelSamplesTest {
     void eachSampleOfSobolTakesAStratifiedBlock(int m) {
         // the m light samples of one hit: an aligned block of a (0,2)-sequence, one point in each
         // square of side 1/sqrt(m)
-        PixelSamples p = new PixelSamples(Samplers.byName("sobol"), 16, LEVELS);
+        Worker w = worker("sobol");
         int side = (int) Math.round(Math.sqrt(m));
         for (int x = 0; x < 20; x++) {
-            double[][] points = pattern(p, x, 0, PixelSamples.LIGHT, 16, m);
+            double[][] points = pattern(w, x, 0, PixelSamples.LIGHT, 16, m);
             for (int i = 0; i < 16; i++) {
                 assertTrue(onePerCell(points, i * m, m, side, side), "sample " + i + " of pixel " + x);
             }
@@ -141,14 +156,15 @@ class PixelSamplesTest {
         // the pairs (pixel position of sample i, its light sample): in which of 4 x 4 cells each
         // lies. Copies of one pattern would pair cell c with cell c every time; independent
         // shuffles spread the pairs over all 256 pairs of cells
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
         int[] pixelWithLight = new int[256];
         int[] lightWithLight = new int[256];
         int[] depth0WithDepth1 = new int[256];
         for (int x = 0; x < 400; x++) {
-            double[][] position = pattern(p, x, 0, PixelSamples.PIXEL, 16, 1);
-            double[][] light0 = pattern(p, x, 0, PixelSamples.LIGHT, 16, 1);
-            double[][] light1 = pattern(p, x, 0, PixelSamples.LIGHT + 1, 16, 1);
+            double[][] position = pattern(w, x, 0, PixelSamples.PIXEL, 16, 1);
+            double[][] light0 = pattern(w, x, 0, PixelSamples.LIGHT, 16, 1);
+            double[][] light1 = pattern(w, x, 0, PixelSamples.LIGHT + 1, 16, 1);
             for (int i = 0; i < 16; i++) {
                 p.startSample(i);
                 p.branch(0, PixelSamples.REFLECTED, 0, 1);
@@ -172,10 +188,11 @@ class PixelSamplesTest {
     void everyValueIsUniformOverPixels(String name) {
         // sample 5's light value over 4000 pixels, in 8 x 8 cells: a shuffle or scramble that
         // favoured some points of a pattern would bias the estimates
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
         int[] cells = new int[64];
         for (int x = 0; x < 4000; x++) {
-            double[] v = light(p, x, 9, 5, 0, 1);
+            double[] v = light(w, x, 9, 5, 0, 1);
             cells[(int) (v[1] * 8) * 8 + (int) (v[0] * 8)]++;
         }
         assertUniform(cells, name);
@@ -184,8 +201,9 @@ class PixelSamplesTest {
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "sobol"})
     void branchesHaveTheirOwnDimensionsAndGlossyRaysShareOnePattern(String name) {
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
-        p.startPixel(1, 2, 3);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
+        w.startPixel(2, 3);
         p.startSample(0);
         p.branch(0, PixelSamples.REFLECTED, 0, 1);
         p.get2D(1, PixelSamples.LIGHT, 0, 1);
@@ -209,11 +227,12 @@ class PixelSamplesTest {
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "sobol"})
     void theSeedAndThePixelChangeTheValues(String name) {
-        PixelSamples p = new PixelSamples(Samplers.byName(name), 16, LEVELS);
-        double[] a = light(p, 0, 0, 0, 0, 1);
-        double[] b = light(p, 1, 0, 0, 0, 1);
+        Worker w = worker(name);
+        PixelSamples p = w.p();
+        double[] a = light(w, 0, 0, 0, 0, 1);
+        double[] b = light(w, 1, 0, 0, 0, 1);
         assertNotEquals(a[0], b[0]);
-        p.startPixel(8, 0, 0);
+        p.startPixel(new SampleTables(Samplers.byName(name), 16, 8), 0, 0);
         p.startSample(0);
         p.get2D(0, PixelSamples.LIGHT, 0, 1);
         assertNotEquals(a[0], p.u);

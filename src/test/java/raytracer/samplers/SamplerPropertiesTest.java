@@ -261,7 +261,7 @@ class SamplerPropertiesTest {
         int[] cells = new int[64];
         int[] fine = new int[10];
         for (int s = 0; s < 6400; s++) {
-            long p = sobol.point(5, Hashes.mix(s));
+            long p = Sobol.point(5, Hashes.mix(s));
             double x = (p >>> 32) * 0x1.0p-32;
             double y = (p & 0xffffffffL) * 0x1.0p-32;
             cells[(int) (y * 8) * 8 + (int) (x * 8)]++;
