@@ -21,4 +21,12 @@ public abstract class Material {
      * are shaded this way too.
      */
     public abstract void areaLightShade(ShadeRec sr, MutableRgb out);
+
+    /**
+     * Whether shading reads the hit's u, v (through a texture). A material that says false lets
+     * the shapes it covers skip computing them; the default says true, to be safe.
+     */
+    public boolean usesTextureCoordinates() {
+        return true;
+    }
 }

@@ -25,6 +25,7 @@ public final class World {
     private GeometricObject[] objects = new GeometricObject[0];
     private GeometricObject[] shadowCasters = new GeometricObject[0];
     private Light[] lights = new Light[0];
+    private boolean textureCoordinates = true;
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -74,6 +75,16 @@ public final class World {
         objects = organized.toArray(new GeometricObject[0]);
         shadowCasters = organized.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
         lights = lightList.toArray(new Light[0]);
+        textureCoordinates = objectList.stream().anyMatch(GeometricObject::usesTextureCoordinates);
+    }
+
+    /**
+     * False once {@link #prepare} found that no object's shading reads u, v (no textures): shapes
+     * then leave out the inverse trigonometry that computes them (a quarter of a simple scene's
+     * sample). True before.
+     */
+    public boolean needsTextureCoordinates() {
+        return textureCoordinates;
     }
 
     /**

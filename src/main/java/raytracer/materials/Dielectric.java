@@ -135,4 +135,10 @@ public final class Dielectric extends Material {
     public double ior() {
         return transmitter.ior();
     }
+
+    /** No texture: u, v are never read. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
 }

@@ -36,4 +36,10 @@ public final class Fitted extends Material {
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
     }
+
+    /** No texture: u, v are never read. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
 }

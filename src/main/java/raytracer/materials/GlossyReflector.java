@@ -21,6 +21,8 @@ import raytracer.math.MutableVec3;
  * point and directional lights, which no ray can hit, still give their highlight directly.
  */
 public final class GlossyReflector extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
     private final double ka;
@@ -43,6 +45,7 @@ public final class GlossyReflector extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular,
                                            DirectLighting.Terms.GLOSSY);
     }
@@ -103,5 +106,10 @@ public final class GlossyReflector extends Material {
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
+    }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
     }
 }

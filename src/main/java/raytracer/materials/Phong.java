@@ -10,6 +10,8 @@ import raytracer.math.MutableRgb;
 
 /** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18). */
 public final class Phong extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     private final double ka;
     private final double kd;
     private final GlossySpecular specular;
@@ -24,6 +26,7 @@ public final class Phong extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
@@ -35,5 +38,10 @@ public final class Phong extends Material {
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
+    }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
     }
 }

@@ -23,6 +23,8 @@ import raytracer.math.MutableRgb;
  * 3: the brown mirror sphere with 0.5); the mirror's weight is then cr alone.
  */
 public final class Reflective extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
     private final double ka;
@@ -46,6 +48,7 @@ public final class Reflective extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
@@ -87,5 +90,10 @@ public final class Reflective extends Material {
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
+    }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
     }
 }

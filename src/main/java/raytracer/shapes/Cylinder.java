@@ -120,8 +120,7 @@ public final class Cylinder extends GeometricObject {
             double g5 = Rounding.gamma(5);
             sr.hitError.set(g5 * Math.abs(px), g3 * (Math.abs(ray.oy) + Math.abs(t * ray.dy)), g5 * Math.abs(pz));
             sr.normal.set(px / radius, 0, pz / radius);
-            double phi = Math.atan2(px, pz) + Math.PI;
-            sr.u = phi / (2 * Math.PI);
+            sr.u = sr.world.needsTextureCoordinates() ? (Math.atan2(px, pz) + Math.PI) / (2 * Math.PI) : 0;
             sr.v = (py - y0) / (y1 - y0);
         } else {
             py = sr.primitive == TOP ? y1 : y0;

@@ -139,6 +139,11 @@ public final class Sphere extends GeometricObject {
         }
         sr.normal.set(nx, ny, nz);
         sr.geometricNormal.set(sr.normal);
+        if (!sr.world.needsTextureCoordinates()) {
+            sr.u = 0;
+            sr.v = 0;
+            return;
+        }
         // spherical coordinates as in Suffern, section 29.3: u around the y axis, v from the south pole
         double phi = Math.atan2(sr.normal.x, sr.normal.z) + Math.PI;
         sr.u = phi / (2 * Math.PI);

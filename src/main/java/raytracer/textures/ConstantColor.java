@@ -20,4 +20,9 @@ public final class ConstantColor implements Texture {
     public void getColor(ShadeRec sr, MutableRgb out) {
         out.set(color);
     }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
 }
