@@ -32,7 +32,9 @@ import raytracer.shapes.mesh.Mesh;
 /**
  * BVH traversal on the Stanford bunny and dragon (from the repository's assets/, or -Draytracer.assets=DIR):
  * closest hit for camera rays through the mesh's bounding box, and any hit for shadow rays from
- * points on the surface towards a light, for both builders. Reports rays per microsecond, one thread.
+ * points on the surface towards a light, for both builders. Each operation sets its ray from
+ * stored numbers, as the renderer does, so what a search derives from its ray is timed with it.
+ * Reports rays per microsecond, one thread.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
@@ -48,9 +50,10 @@ public class MeshTraversalBenchmark {
     public String builder;
 
     private static final int RAYS = 4096;
-    private final Ray[] cameraRays = new Ray[RAYS];
-    private final Ray[] shadowRays = new Ray[RAYS];
-    private final double[] shadowLength = new double[RAYS];
+    /** Per ray: origin and direction (and for shadow rays the distance to the light). */
+    private final double[] cameraRays = new double[6 * RAYS];
+    private final double[] shadowRays = new double[7 * RAYS];
+    private final Ray ray = new Ray();
     private MeshBVH bvh;
     private ShadeRec sr;
     private int next;
@@ -71,36 +74,49 @@ public class MeshTraversalBenchmark {
         Point3D eye = new Point3D(c.x(), c.y() + 0.2 * size, c.z() + 1.5 * size);
         Point3D light = new Point3D(c.x() - size, c.y() + 2 * size, c.z() + size);
         SplittableRandom r = new SplittableRandom(1);
+        Ray shadow = new Ray();
         int made = 0;
         while (made < RAYS) {
             double tx = r.nextDouble(box.x0(), box.x1());
             double ty = r.nextDouble(box.y0(), box.y1());
-            Ray ray = new Ray().set(eye.x(), eye.y(), eye.z(), tx - eye.x(), ty - eye.y(), c.z() - eye.z());
+            ray.set(eye.x(), eye.y(), eye.z(), tx - eye.x(), ty - eye.y(), c.z() - eye.z());
             sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
             if (!bvh.hit(ray, sr)) {
                 continue;
             }
             sr.complete(ray);
-            cameraRays[made] = ray;
+            store(ray, cameraRays, 6 * made);
             double dx = light.x() - sr.hitPoint.x;
             double dy = light.y() - sr.hitPoint.y;
             double dz = light.z() - sr.hitPoint.z;
-            shadowLength[made] = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            shadowRays[made] = sr.spawnRay(dx / shadowLength[made], dy / shadowLength[made], dz / shadowLength[made], new Ray());
+            double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            store(sr.spawnRay(dx / length, dy / length, dz / length, shadow), shadowRays, 7 * made);
+            shadowRays[7 * made + 6] = length;
             made++;
         }
     }
 
+    private static void store(Ray r, double[] to, int at) {
+        to[at] = r.ox;
+        to[at + 1] = r.oy;
+        to[at + 2] = r.oz;
+        to[at + 3] = r.dx;
+        to[at + 4] = r.dy;
+        to[at + 5] = r.dz;
+    }
+
     @Benchmark
     public boolean closestHit() {
-        Ray ray = cameraRays[next++ & (RAYS - 1)];
+        int k = 6 * (next++ & (RAYS - 1));
+        ray.set(cameraRays[k], cameraRays[k + 1], cameraRays[k + 2], cameraRays[k + 3], cameraRays[k + 4], cameraRays[k + 5]);
         sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
         return bvh.hit(ray, sr);
     }
 
     @Benchmark
     public boolean anyHit() {
-        int i = next++ & (RAYS - 1);
-        return bvh.shadowHit(shadowRays[i], shadowLength[i], sr);
+        int k = 7 * (next++ & (RAYS - 1));
+        ray.set(shadowRays[k], shadowRays[k + 1], shadowRays[k + 2], shadowRays[k + 3], shadowRays[k + 4], shadowRays[k + 5]);
+        return bvh.shadowHit(ray, shadowRays[k + 6], sr);
     }
 }

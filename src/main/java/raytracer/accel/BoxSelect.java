@@ -2,15 +2,16 @@ package raytracer.accel;
 
 /**
  * Selection over primitives stored as float boxes (six per primitive) with their ids beside them,
- * keyed by the box's centroid on one axis: afterwards position k holds the primitive a full sort
- * would put there, with no larger key before it and no smaller key after it. Boxes move with their
- * ids, so the passes read memory in order.
+ * in the order of the report's sort: by the centroid on one axis ({@link FloatBoxes#centroidKey}),
+ * ties by id, so that no two primitives are equal and the median is one primitive. Afterwards
+ * position k holds the primitive a full sort would put there, with only smaller ones before it
+ * and larger ones after. Boxes move with their ids, so the passes read memory in order.
  *
  * <p>Large ranges use Floyd and Rivest's SELECT (CACM 18(3), 1975): the k-th element of a window
  * of about n^(2/3) elements around k is found first, recursively, and is nearly the k-th of the
- * whole range, so one partition pass around it leaves only a sliver to finish; about 1.5 n
- * comparisons for a median instead of about 2.75 n for quickselect with a median-of-three pivot
- * (Hoare's FIND, 1961), which finishes the smaller ranges.
+ * whole range, so one partition around it leaves only a sliver to finish; about 1.5 n comparisons
+ * for a median instead of about 2.75 n for quickselect with a median-of-three pivot (Hoare's FIND,
+ * 1961), which finishes the smaller ranges.
  */
 final class BoxSelect {
     /** Ranges this short are finished by insertion sort. */
@@ -21,13 +22,19 @@ final class BoxSelect {
     private BoxSelect() {
     }
 
-    /** Selects within positions [from, to) so that position k holds its sorted element. */
+    /** Selects within positions from .. to - 1 so that position k holds its sorted element. */
     static void nth(float[] boxes, int[] ids, int axis, int from, int to, int k) {
         select(boxes, ids, axis, from, to - 1, k);
     }
 
+    /** Sorts positions from .. to - 1 (a leaf's few primitives). */
+    static void sort(float[] boxes, int[] ids, int axis, int from, int to) {
+        insertionSort(boxes, ids, axis, from, to - 1);
+    }
+
     private static void select(float[] boxes, int[] ids, int axis, int lo, int hi, int k) {
         while (hi - lo >= SMALL) {
+            int pivot;
             if (hi - lo > WINDOWED) {
                 // a window around k whose k-th element lies within a few standard deviations of
                 // the range's k-th, with the sizes of Floyd and Rivest's algorithm 489
@@ -39,48 +46,51 @@ final class BoxSelect {
                 int windowLo = (int) Math.max(lo, Math.floor(k - i * s / n + sd));
                 int windowHi = (int) Math.min(hi, Math.floor(k + (n - i) * s / n + sd));
                 select(boxes, ids, axis, windowLo, windowHi, k);
+                pivot = k;
             } else {
-                // median of three to k, as pivot
+                // the median of the first, middle and last elements
                 int mid = (lo + hi) >>> 1;
-                if (key(boxes, axis, mid) < key(boxes, axis, lo)) {
+                if (before(boxes, ids, axis, mid, lo)) {
                     swap(boxes, ids, mid, lo);
                 }
-                if (key(boxes, axis, hi) < key(boxes, axis, lo)) {
+                if (before(boxes, ids, axis, hi, lo)) {
                     swap(boxes, ids, hi, lo);
                 }
-                if (key(boxes, axis, hi) < key(boxes, axis, mid)) {
+                if (before(boxes, ids, axis, hi, mid)) {
                     swap(boxes, ids, hi, mid);
                 }
-                swap(boxes, ids, mid, k);
+                pivot = mid;
             }
-            long split = partition(boxes, ids, axis, lo, hi, key(boxes, axis, k));
-            int i = (int) (split >>> 32);
-            int j = (int) split;
+            float pivotKey = FloatBoxes.centroidKey(boxes, pivot, axis);
+            int pivotId = ids[pivot];
+            int j = partition(boxes, ids, axis, lo, hi, pivotKey, pivotId);
             if (k <= j) {
                 hi = j;
-            } else if (k >= i) {
-                lo = i;
+            } else if (k == j + 1 && ids[k] == pivotId) {
+                return; // the pivot ended between the two parts, at k
             } else {
-                return; // j < k < i: k holds the pivot value
+                lo = j + 1;
             }
         }
         insertionSort(boxes, ids, axis, lo, hi);
     }
 
     /**
-     * Hoare's partition of [lo, hi] around {@code pivot}: equal keys stop both scans, so runs of
-     * equal keys still split evenly. Returns the final scan positions i (high 32 bits) and j (low):
-     * keys at or before j are not above the pivot, keys at or after i are not below it. A method of
-     * its own, like {@link #insertionSort}, so that the JIT compiles each loop early and on its own.
+     * Hoare's partition of positions lo .. hi around the pivot, an element among them given by
+     * its key and id: returns j such that no element at or before j comes after the pivot and
+     * none after j comes before it; the pivot itself is at j + 1 or in one of the two parts.
      */
-    private static long partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivot) {
+    private static int partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivotKey, int pivotId) {
+        // a method of its own, like insertionSort, so that the JIT compiles each loop early. The
+        // scans need no bounds test: the pivot, or an element swapped past, stops each (a bounds
+        // test that is rarely false became a trap, and JFR showed the first pass deoptimised)
         int i = lo;
         int j = hi;
         while (i <= j) {
-            while (key(boxes, axis, i) < pivot) {
+            while (before(FloatBoxes.centroidKey(boxes, i, axis), ids[i], pivotKey, pivotId)) {
                 i++;
             }
-            while (key(boxes, axis, j) > pivot) {
+            while (before(pivotKey, pivotId, FloatBoxes.centroidKey(boxes, j, axis), ids[j])) {
                 j--;
             }
             if (i <= j) {
@@ -89,20 +99,27 @@ final class BoxSelect {
                 j--;
             }
         }
-        return (long) i << 32 | (j & 0xffffffffL);
+        return j;
     }
 
     private static void insertionSort(float[] boxes, int[] ids, int axis, int lo, int hi) {
         for (int i = lo + 1; i <= hi; i++) {
-            for (int j = i; j > lo && key(boxes, axis, j) < key(boxes, axis, j - 1); j--) {
+            for (int j = i; j > lo && before(boxes, ids, axis, j, j - 1); j--) {
                 swap(boxes, ids, j, j - 1);
             }
         }
     }
 
-    /** Twice the centroid on the axis: the same order, one operation less. */
-    private static float key(float[] boxes, int axis, int i) {
-        return boxes[6 * i + axis] + boxes[6 * i + 3 + axis];
+    /** True when the primitive at position a comes before the one at position b. */
+    private static boolean before(float[] boxes, int[] ids, int axis, int a, int b) {
+        return before(FloatBoxes.centroidKey(boxes, a, axis), ids[a], FloatBoxes.centroidKey(boxes, b, axis), ids[b]);
+    }
+
+    /** The report's order: by key, ties by id. */
+    static boolean before(float keyA, int idA, float keyB, int idB) {
+        // & and | rather than && and ||: a tie is rare, and the JIT compiles a rarely taken
+        // branch as a trap, whose first use sends the pass back to the interpreter
+        return keyA < keyB | (keyA == keyB & idA < idB);
     }
 
     private static void swap(float[] boxes, int[] ids, int a, int b) {
@@ -116,37 +133,5 @@ final class BoxSelect {
             boxes[pa + c] = boxes[pb + c];
             boxes[pb + c] = t;
         }
-    }
-
-    /** The union of the boxes at positions [from, to), written to out[at .. at + 6). */
-    static void union(float[] boxes, int from, int to, float[] out, int at) {
-        float x0 = Float.POSITIVE_INFINITY;
-        float y0 = Float.POSITIVE_INFINITY;
-        float z0 = Float.POSITIVE_INFINITY;
-        float x1 = Float.NEGATIVE_INFINITY;
-        float y1 = Float.NEGATIVE_INFINITY;
-        float z1 = Float.NEGATIVE_INFINITY;
-        // comparisons rather than Math.min/max: a running extreme rarely changes, so the branches
-        // predict well, where Math.min's NaN-and-zero handling costs a blend sequence per value
-        for (int p = 6 * from; p < 6 * to; p += 6) {
-            float v = boxes[p];
-            x0 = v < x0 ? v : x0;
-            v = boxes[p + 1];
-            y0 = v < y0 ? v : y0;
-            v = boxes[p + 2];
-            z0 = v < z0 ? v : z0;
-            v = boxes[p + 3];
-            x1 = v > x1 ? v : x1;
-            v = boxes[p + 4];
-            y1 = v > y1 ? v : y1;
-            v = boxes[p + 5];
-            z1 = v > z1 ? v : z1;
-        }
-        out[at] = x0;
-        out[at + 1] = y0;
-        out[at + 2] = z0;
-        out[at + 3] = x1;
-        out[at + 4] = y1;
-        out[at + 5] = z1;
     }
 }

@@ -5,19 +5,19 @@ import java.util.Map;
 import java.util.concurrent.RecursiveAction;
 
 /**
- * The report's BVH (section 6): split each node on the longest axis of its box, order its
- * primitives by centroid along that axis and halve them at the median; the children may overlap.
- * Instead of sorting at every level, a quickselect ({@link BoxSelect}) puts the median in place with
- * the smaller half before it: O(n) per level, O(n log n) in all.
+ * The report's median-split BVH (section 6), built fast: it makes the same tree as
+ * {@link SortedMedianBuilder}, the algorithm as the report states it (SortedMedianBuilderTest
+ * checks node for node), but instead of sorting each node's primitives it selects the median in
+ * place ({@link BoxSelect}): O(n) per level, O(n log n) in all.
  *
- * <p>The primitives' boxes are floats rounded outward and travel with their primitive through the
+ * <p>The primitives' boxes are floats rounded outward and travel with their ids through the
  * selections, so every pass over a node's primitives reads one contiguous run of memory (an index
  * array into boxes in file order made each pass a random walk). The children's boxes are found by
- * one pass at their parent and written straight into its traversal record.
+ * one pass at their parent and written straight into its node.
  *
  * <p>Because a node always halves its count, the size of every subtree follows from its count
- * alone; each subtree therefore knows its place in the depth-first records before it is built, and
- * large subtrees are built in parallel with the same records and leaf order as a serial build
+ * alone; each subtree therefore knows its place in the depth-first node order before it is built,
+ * and large subtrees are built in parallel into the same nodes as a serial build
  * (MedianSplitBuilderTest).
  */
 public final class MedianSplitBuilder {
@@ -46,14 +46,7 @@ public final class MedianSplitBuilder {
 
     /** Builds over primitives whose boxes are {@code primBounds[6i .. 6i+6)} = (x0, y0, z0, x1, y1, z1). */
     public FlatBVH build(double[] primBounds) {
-        float[] boxes = new float[primBounds.length];
-        for (int i = 0; i < primBounds.length; i += 6) {
-            for (int k = 0; k < 3; k++) {
-                boxes[i + k] = FlatBVH.roundDown(primBounds[i + k]);
-                boxes[i + 3 + k] = FlatBVH.roundUp(primBounds[i + 3 + k]);
-            }
-        }
-        return build(boxes);
+        return build(FloatBoxes.roundOutward(primBounds));
     }
 
     /**
@@ -69,31 +62,25 @@ public final class MedianSplitBuilder {
         for (int i = 0; i < n; i++) {
             order[i] = i;
         }
-        float[] root = new float[6];
-        BoxSelect.union(boxes, 0, n, root, 0);
-        int[] rootBox = new int[6];
-        for (int k = 0; k < 6; k++) {
-            rootBox[k] = Float.floatToRawIntBits(root[k]);
+        float[] rootBox = new float[6];
+        FloatBoxes.union(boxes, 0, n, rootBox, 0);
+        if (n <= leafSize) {
+            return new FlatBVH(new BvhNodes(0), order, rootBox, 0, n);
         }
         Map<Integer, Integer> sizes = new HashMap<>();
-        int interior = interiorNodes(n, sizes);
-        if (n <= leafSize) {
-            return new FlatBVH(new int[0], order, rootBox, 0, n, 1);
-        }
-        int[] records = new int[FlatBVH.RECORD * interior];
-        Job job = new Job(boxes, order, records, sizes, 0, 0, n, longestAxis(root, 0));
+        BvhNodes nodes = new BvhNodes(interiorNodes(n, sizes));
+        Job job = new Job(boxes, order, nodes, sizes, 0, 0, n, FloatBoxes.longestAxis(rootBox, 0));
         if (n > parallelThreshold) {
             job.invoke(); // its subtrees fork into the caller's pool (the run's one pool), else the common pool
         } else {
             job.compute();
         }
-        return new FlatBVH(records, order, rootBox, 0, 0, 2 * interior + 1);
+        return new FlatBVH(nodes, order, rootBox, 0, 0);
     }
 
     /**
-     * Interior nodes in a subtree over {@code count} primitives (a binary tree has one leaf more).
-     * Only two counts occur per level, so the memo stays tiny; it is filled before the parallel
-     * build and only read during it.
+     * Interior nodes in a subtree over {@code count} primitives. Only two counts occur per level,
+     * so the memo stays tiny; it is filled before the parallel build and only read during it.
      */
     private int interiorNodes(int count, Map<Integer, Integer> memo) {
         if (count <= leafSize) {
@@ -109,80 +96,72 @@ public final class MedianSplitBuilder {
         return nodes;
     }
 
-    private static int longestAxis(float[] box, int at) {
-        float ex = box[at + 3] - box[at];
-        float ey = box[at + 4] - box[at + 1];
-        float ez = box[at + 5] - box[at + 2];
-        return ex >= ey && ex >= ez ? 0 : (ey >= ez ? 1 : 2);
-    }
-
     /**
-     * Halves positions [from, to) at their median on {@code axis} and writes both children's boxes
-     * into {@code record}; returns the boxes (left, then right) so the children can pick their axes.
+     * Halves positions from .. to - 1 at their median on {@code axis} and writes both children's
+     * boxes into {@code node}; returns the boxes (left, then right) so the children can pick their axes.
      */
-    private static float[] halve(float[] boxes, int[] order, int[] records, int record, int from, int to, int axis) {
+    private static float[] halve(float[] boxes, int[] order, BvhNodes nodes, int node, int from, int to, int axis) {
         int mid = from + (to - from) / 2;
         BoxSelect.nth(boxes, order, axis, from, to, mid);
         float[] childBoxes = new float[12];
-        BoxSelect.union(boxes, from, mid, childBoxes, 0);
-        BoxSelect.union(boxes, mid, to, childBoxes, 6);
-        int r = FlatBVH.RECORD * record;
-        for (int k = 0; k < 12; k++) {
-            records[r + k] = Float.floatToRawIntBits(childBoxes[k]);
-        }
+        FloatBoxes.union(boxes, from, mid, childBoxes, 0);
+        FloatBoxes.union(boxes, mid, to, childBoxes, 6);
+        nodes.setBoxes(node, childBoxes, 0);
         return childBoxes;
     }
 
     /**
-     * Builds the subtree over positions [from, to), more than a leaf, depth-first into
-     * {@code record} and the records after it; returns the first record after the subtree. The
-     * right child's record is known once the left subtree is done, so no size table is needed.
+     * Builds the subtree over positions from .. to - 1, more than a leaf, depth-first into
+     * {@code node} and the nodes after it; returns the first node after the subtree. The right
+     * child's number is known once the left subtree is done, so no size table is needed.
      */
-    private int buildSerial(float[] boxes, int[] order, int[] records, int record, int from, int to, int axis) {
-        float[] childBoxes = halve(boxes, order, records, record, from, to, axis);
+    private int buildSerial(float[] boxes, int[] order, BvhNodes nodes, int node, int from, int to, int axis) {
+        float[] childBoxes = halve(boxes, order, nodes, node, from, to, axis);
         int mid = from + (to - from) / 2;
-        int r = FlatBVH.RECORD * record;
-        int next = record + 1;
-        if (mid - from <= leafSize) {
-            records[r + FlatBVH.LINK] = from;
-            records[r + FlatBVH.COUNT] = mid - from;
-        } else {
-            records[r + FlatBVH.LINK] = next;
-            next = buildSerial(boxes, order, records, next, from, mid, longestAxis(childBoxes, 0));
-        }
-        if (to - mid <= leafSize) {
-            records[r + FlatBVH.LINK + 1] = mid;
-            records[r + FlatBVH.COUNT + 1] = to - mid;
-        } else {
-            records[r + FlatBVH.LINK + 1] = next;
-            next = buildSerial(boxes, order, records, next, mid, to, longestAxis(childBoxes, 6));
-        }
-        return next;
+        int next = node + 1;
+        next = child(boxes, order, nodes, node, BvhNodes.LEFT, next, from, mid, axis, childBoxes);
+        return child(boxes, order, nodes, node, BvhNodes.RIGHT, next, mid, to, axis, childBoxes);
     }
 
     /**
-     * Builds the subtree over positions [from, to) into record {@code record} and after: above
-     * the parallel threshold both halves become parallel tasks, whose record
-     * numbers come from {@link #interiorNodes}; below it, {@link #buildSerial}.
+     * Makes positions from .. to - 1 the child of {@code node} on {@code side}: a leaf, its
+     * primitives in order along the parent's axis as a sort would leave them, or a subtree built
+     * from node {@code next} on. Returns the first node after it.
+     */
+    private int child(float[] boxes, int[] order, BvhNodes nodes, int node, int side, int next, int from, int to,
+                      int parentAxis, float[] childBoxes) {
+        if (to - from <= leafSize) {
+            BoxSelect.sort(boxes, order, parentAxis, from, to);
+            nodes.setLeaf(node, side, from, to - from);
+            return next;
+        }
+        nodes.setInterior(node, side, next);
+        return buildSerial(boxes, order, nodes, next, from, to, FloatBoxes.longestAxis(childBoxes, 6 * side));
+    }
+
+    /**
+     * Builds the subtree over positions from .. to - 1 into node {@code node} and after: above
+     * the parallel threshold both halves become parallel tasks, whose node numbers come from
+     * {@link #interiorNodes}; below it, {@link #buildSerial}.
      */
     private final class Job extends RecursiveAction {
         private static final long serialVersionUID = 1L;
         private final transient float[] boxes;
         private final transient int[] order;
-        private final transient int[] records;
+        private final transient BvhNodes nodes;
         private final transient Map<Integer, Integer> sizes;
-        private final int record;
+        private final int node;
         private final int from;
         private final int to;
         private final int axis;
 
-        Job(float[] boxes, int[] order, int[] records, Map<Integer, Integer> sizes, int record, int from, int to,
+        Job(float[] boxes, int[] order, BvhNodes nodes, Map<Integer, Integer> sizes, int node, int from, int to,
             int axis) {
             this.boxes = boxes;
             this.order = order;
-            this.records = records;
+            this.nodes = nodes;
             this.sizes = sizes;
-            this.record = record;
+            this.node = node;
             this.from = from;
             this.to = to;
             this.axis = axis;
@@ -191,19 +170,18 @@ public final class MedianSplitBuilder {
         @Override
         protected void compute() {
             if (to - from <= parallelThreshold) {
-                buildSerial(boxes, order, records, record, from, to, axis);
+                buildSerial(boxes, order, nodes, node, from, to, axis);
                 return;
             }
-            float[] childBoxes = halve(boxes, order, records, record, from, to, axis);
+            float[] childBoxes = halve(boxes, order, nodes, node, from, to, axis);
             int mid = from + (to - from) / 2;
             // both halves are interior nodes here: the threshold is above twice the leaf size
-            int leftRecord = record + 1;
-            int rightRecord = leftRecord + interiorNodes(mid - from, sizes);
-            int r = FlatBVH.RECORD * record;
-            records[r + FlatBVH.LINK] = leftRecord;
-            records[r + FlatBVH.LINK + 1] = rightRecord;
-            invokeAll(new Job(boxes, order, records, sizes, leftRecord, from, mid, longestAxis(childBoxes, 0)),
-                      new Job(boxes, order, records, sizes, rightRecord, mid, to, longestAxis(childBoxes, 6)));
+            int left = node + 1;
+            int right = left + interiorNodes(mid - from, sizes);
+            nodes.setInterior(node, BvhNodes.LEFT, left);
+            nodes.setInterior(node, BvhNodes.RIGHT, right);
+            invokeAll(new Job(boxes, order, nodes, sizes, left, from, mid, FloatBoxes.longestAxis(childBoxes, 0)),
+                      new Job(boxes, order, nodes, sizes, right, mid, to, FloatBoxes.longestAxis(childBoxes, 6)));
         }
     }
 }

@@ -29,18 +29,15 @@ public final class SahBuilder {
         }
         State s = new State(primBounds, n);
         buildNode(s, 0, n, 1);
-        return FlatBVH.fromNodes(s.bounds, s.meta, s.order, s.nodeCount);
+        return s.tree.flatten(s.order);
     }
 
-    /** Build-time arrays; nodes are appended depth-first, so a node's left child follows it. */
+    /** Build-time arrays, and the tree as it grows. */
     private static final class State {
         final double[] primBounds;
         final double[] centroids;
         final int[] order;
-        final int[] binOf;
-        double[] bounds;
-        int[] meta;
-        int nodeCount;
+        final DepthFirstTree tree = new DepthFirstTree();
         final int[] binCount = new int[BINS];
         final double[] binBounds = new double[6 * BINS];
         final double[] rightArea = new double[BINS];
@@ -49,32 +46,19 @@ public final class SahBuilder {
             this.primBounds = primBounds;
             centroids = new double[3 * n];
             order = new int[n];
-            binOf = new int[n];
             for (int i = 0; i < n; i++) {
                 order[i] = i;
                 for (int k = 0; k < 3; k++) {
                     centroids[3 * i + k] = 0.5 * (primBounds[6 * i + k] + primBounds[6 * i + 3 + k]);
                 }
             }
-            int capacity = Math.max(16, n / 2);
-            bounds = new double[6 * capacity];
-            meta = new int[2 * capacity];
-        }
-
-        int newNode() {
-            if (nodeCount * 2 == meta.length) {
-                meta = Arrays.copyOf(meta, meta.length * 2);
-                bounds = Arrays.copyOf(bounds, bounds.length * 2);
-            }
-            return nodeCount++;
         }
     }
 
     private void buildNode(State s, int from, int to, int depth) {
-        int node = s.newNode();
         int count = to - from;
         double[] box = unionBounds(s, from, to);
-        System.arraycopy(box, 0, s.bounds, 6 * node, 6);
+        int node = s.tree.add(box, 0);
         double[] cbox = centroidBounds(s, from, to);
         int bestAxis = -1;
         int bestBin = -1;
@@ -121,25 +105,16 @@ public final class SahBuilder {
         }
         boolean leafIsCheaper = bestCost >= count && count <= maxLeafSize;
         if (count == 1 || leafIsCheaper || depth >= FlatBVH.MAX_DEPTH - 1) {
-            s.meta[2 * node] = from;
-            s.meta[2 * node + 1] = count;
+            s.tree.setLeaf(node, from, count);
             return;
         }
-        int mid;
-        int axis;
-        if (bestAxis < 0) {
-            // all centroids coincide: any even split is as good as another
-            axis = 0;
-            mid = from + count / 2;
-        } else {
-            axis = bestAxis;
-            mid = partition(s, from, to, axis, cbox[axis], cbox[axis + 3] - cbox[axis], bestBin);
-        }
+        // when all centroids coincide (no best axis), any even split is as good as another
+        int mid = bestAxis < 0 ? from + count / 2
+            : partition(s, from, to, bestAxis, cbox[bestAxis], cbox[bestAxis + 3] - cbox[bestAxis], bestBin);
         buildNode(s, from, mid, depth + 1);
-        int right = s.nodeCount;
+        int right = s.tree.size();
         buildNode(s, mid, to, depth + 1);
-        s.meta[2 * node] = right;
-        s.meta[2 * node + 1] = -(axis + 1);
+        s.tree.setInterior(node, right);
     }
 
     private static int bin(double c, double lo, double extent) {

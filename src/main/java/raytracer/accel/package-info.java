@@ -1,7 +1,11 @@
 /**
- * Acceleration structures (report section 6): a bounding volume hierarchy stored flat in arrays,
- * built by the report's sorted-median split or by the binned surface area heuristic, over the
- * triangles of a mesh ({@link raytracer.accel.MeshBVH}) or over ordinary objects
- * ({@link raytracer.accel.ObjectBVH}).
+ * Acceleration structures (report section 6): a bounding volume hierarchy flattened into arrays
+ * ({@link raytracer.accel.FlatBVH}, its node layout in {@code BvhNodes}) with one traversal for
+ * closest and any hit; over the triangles of a mesh ({@link raytracer.accel.MeshBVH}) or over
+ * ordinary objects ({@link raytracer.accel.ObjectBVH}). Built by the report's sorted-median split,
+ * as written ({@link raytracer.accel.SortedMedianBuilder}) or as the renderer runs it, the same
+ * tree by median selection ({@link raytracer.accel.MedianSplitBuilder}), or by the binned surface
+ * area heuristic ({@link raytracer.accel.SahBuilder}). {@link raytracer.accel.Aggregation} decides
+ * what the world searches through a BVH.
  */
 package raytracer.accel;

@@ -35,6 +35,12 @@ public final class BlinnPhong implements BRDF {
         return cosH <= 0 ? 0 : (exponent + 2) / (2 * Math.PI) * Math.pow(cosH, exponent);
     }
 
+    /** Zero when rho_s is black: f is rho_s times a power of a cosine, at most (e + 2) / (2 pi). */
+    @Override
+    public boolean isBlack() {
+        return rhoS.isBlack();
+    }
+
     @Override
     public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();

@@ -75,9 +75,28 @@ public final class GlossySpecular implements BRDF {
         return SampleMapping.hemispherePdf(rDotWi, exp);
     }
 
+    /** Zero when ks or the colour is 0: f is then 0 times a power of a cosine, at most 1. */
+    @Override
+    public boolean isBlack() {
+        return scale == 0 || cs.isBlack();
+    }
+
     /** A lobe this narrow has no meaningful ambient response; Suffern returns black too. */
     @Override
     public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
+    }
+
+    public RGBColor cs() {
+        return cs;
+    }
+
+    public double exp() {
+        return exp;
+    }
+
+    /** The factor of cs cos^e(alpha): ks, or ks (e + 2) / (2 pi) for the normalised lobe. */
+    public double scale() {
+        return scale;
     }
 }

@@ -38,6 +38,20 @@ public final class Lambertian implements BRDF {
         color(sr, out).scale(kd);
     }
 
+    /** Zero when kd is 0 or the colour is black; a texture's colours are not known unless constant. */
+    @Override
+    public boolean isBlack() {
+        RGBColor c = texture == null ? cd : texture.constantColor();
+        return kd == 0 || c != null && c.isBlack();
+    }
+
+    /** A constant texture becomes the plain colour it always gives, which needs no lookup. */
+    @Override
+    public BRDF simplified() {
+        RGBColor constant = texture == null ? null : texture.constantColor();
+        return constant == null ? this : new Lambertian(kd, constant);
+    }
+
     private MutableRgb color(ShadeRec sr, MutableRgb out) {
         if (texture == null) {
             return out.set(cd);

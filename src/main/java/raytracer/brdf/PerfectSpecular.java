@@ -19,6 +19,12 @@ public final class PerfectSpecular implements BRDF {
         this.reflectance = cr.scale(kr);
     }
 
+    /** True when kr cr is black: every mirror ray would be weighted 0. */
+    @Override
+    public boolean isBlack() {
+        return reflectance.isBlack();
+    }
+
     /** Zero: no finite direction-to-direction value exists for a delta. */
     @Override
     public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
@@ -45,5 +51,10 @@ public final class PerfectSpecular implements BRDF {
     @Override
     public void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out) {
         out.setBlack();
+    }
+
+    /** kr cr, the weight of the mirror direction. */
+    public RGBColor reflectance() {
+        return reflectance;
     }
 }

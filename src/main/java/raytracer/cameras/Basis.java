@@ -1,5 +1,9 @@
 package raytracer.cameras;
 
+import java.util.ArrayList;
+import java.util.List;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.Vector3D;
 
@@ -9,6 +13,37 @@ import raytracer.math.Vector3D;
  * up vector is used, as the book's singularity fix does.
  */
 record Basis(Point3D eye, Vector3D u, Vector3D v, Vector3D w) {
+
+    /**
+     * The view volume of rays that start within {@code reach} of the eye in the image plane's
+     * directions and leave it at most {@code slopeX} sideways and {@code slopeY} up or down per
+     * unit of depth along -w: four faces q . (+-u + slopeX w) &lt;= reach and
+     * q . (+-v + slopeY w) &lt;= reach for q = p - eye, and the plane of the eye, q . w &lt;= 0.
+     * A pinhole has reach 0; an orthographic camera has slope 0 and one reach per axis.
+     */
+    List<HalfSpace> viewVolume(double reachX, double reachY, double slopeX, double slopeY) {
+        List<HalfSpace> faces = new ArrayList<>();
+        for (int sign = -1; sign <= 1; sign += 2) {
+            faces.add(face(u.scale(sign).add(w.scale(slopeX)), reachX));
+            faces.add(face(v.scale(sign).add(w.scale(slopeY)), reachY));
+        }
+        faces.add(face(w, 0));
+        return faces;
+    }
+
+    /** The box of the points eye + x u + y v with |x| &lt;= reachX, |y| &lt;= reachY, rounded outward by an ulp. */
+    BBox origins(double reachX, double reachY) {
+        double ex = reachX * Math.abs(u.x()) + reachY * Math.abs(v.x());
+        double ey = reachX * Math.abs(u.y()) + reachY * Math.abs(v.y());
+        double ez = reachX * Math.abs(u.z()) + reachY * Math.abs(v.z());
+        return new BBox(Math.nextDown(eye.x() - ex), Math.nextDown(eye.y() - ey), Math.nextDown(eye.z() - ez),
+                        Math.nextUp(eye.x() + ex), Math.nextUp(eye.y() + ey), Math.nextUp(eye.z() + ez));
+    }
+
+    /** n . (p - eye) &lt;= reach. */
+    private HalfSpace face(Vector3D n, double reach) {
+        return new HalfSpace(n.x(), n.y(), n.z(), reach + n.x() * eye.x() + n.y() * eye.y() + n.z() * eye.z());
+    }
 
     static Basis lookAt(Point3D eye, Point3D lookAt, Vector3D up) {
         Vector3D view = eye.sub(lookAt);

@@ -1,7 +1,10 @@
 package raytracer.cameras;
 
+import java.util.List;
 import raytracer.core.Camera;
 import raytracer.core.ViewPlane;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.Vector3D;
@@ -33,5 +36,17 @@ public final class Orthographic implements Camera {
         Point3D eye = basis.eye();
         out.set(eye.x() + xs * u.x() + ys * v.x(), eye.y() + xs * u.y() + ys * v.y(),
                 eye.z() + xs * u.z() + ys * v.z(), -w.x(), -w.y(), -w.z());
+    }
+
+    /** The box of parallel rays behind the window: the window's half-width and half-height, no slope. */
+    @Override
+    public List<HalfSpace> viewVolume(ViewPlane vp) {
+        double aspect = (double) vp.hres() / vp.vres();
+        return basis.viewVolume(halfHeight * aspect, halfHeight, 0, 0);
+    }
+
+    @Override
+    public BBox rayOrigins(ViewPlane vp) {
+        return basis.origins(halfHeight * vp.hres() / vp.vres(), halfHeight);
     }
 }

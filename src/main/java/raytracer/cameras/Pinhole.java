@@ -1,7 +1,10 @@
 package raytracer.cameras;
 
+import java.util.List;
 import raytracer.core.Camera;
 import raytracer.core.ViewPlane;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.Vector3D;
@@ -36,5 +39,17 @@ public final class Pinhole implements Camera {
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
         Point3D eye = basis.eye();
         out.set(eye.x(), eye.y(), eye.z(), dx * inv, dy * inv, dz * inv);
+    }
+
+    /** The frustum through the image's edges: slopes tan(fov / 2) times the aspect ratio sideways, tan(fov / 2) up and down. */
+    @Override
+    public List<HalfSpace> viewVolume(ViewPlane vp) {
+        double aspect = (double) vp.hres() / vp.vres();
+        return basis.viewVolume(0, 0, halfHeight * aspect, halfHeight);
+    }
+
+    @Override
+    public BBox rayOrigins(ViewPlane vp) {
+        return basis.origins(0, 0);
     }
 }

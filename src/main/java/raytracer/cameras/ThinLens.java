@@ -1,7 +1,10 @@
 package raytracer.cameras;
 
+import java.util.List;
 import raytracer.core.Camera;
 import raytracer.core.ViewPlane;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.Vector3D;
@@ -57,5 +60,22 @@ public final class ThinLens implements Camera {
     @Override
     public boolean needsLensSamples() {
         return lensRadius > 0;
+    }
+
+    /**
+     * Every ray starts within the lens radius R of the eye and passes the focal plane within the
+     * frame's half-size there; at depth z its sideways offset is at most R |1 - z / f| + z a
+     * &lt;= R + z (a + R / f) (a the frame's slope), which bounds the volume by planes.
+     */
+    @Override
+    public List<HalfSpace> viewVolume(ViewPlane vp) {
+        double aspect = (double) vp.hres() / vp.vres();
+        double spread = lensRadius / focalDistance;
+        return basis.viewVolume(lensRadius, lensRadius, halfHeight * aspect + spread, halfHeight + spread);
+    }
+
+    @Override
+    public BBox rayOrigins(ViewPlane vp) {
+        return basis.origins(lensRadius, lensRadius);
     }
 }

@@ -10,6 +10,7 @@ import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
+import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 import raytracer.samplers.Samplers;
 
@@ -51,7 +52,13 @@ final class OptionChecks {
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
         Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, o.maxDepth, pass, o.cutoff, encoding);
-        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet);
+        if (o.noCache && o.cacheDir != null) {
+            throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
+        }
+        Path meshCache = o.noCache ? null
+            : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
+        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet,
+                                 meshCache);
     }
 
     private static boolean parseView(String view) {

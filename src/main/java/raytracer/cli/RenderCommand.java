@@ -75,6 +75,14 @@ public final class RenderCommand implements Callable<Integer> {
                           + Aggregation.AUTO_THRESHOLD + " bounded objects on), list, median or sah.")
     String accel = "auto";
 
+    @Option(names = "--cache-dir", paramLabel = "DIR",
+            description = "Where parsed meshes and their BVHs are cached. Default: $XDG_CACHE_HOME/raytracer/meshes, "
+                          + "or ~/.cache/raytracer/meshes.")
+    Path cacheDir;
+
+    @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
+    boolean noCache;
+
     @Option(names = "--repeat", paramLabel = "N",
             description = "Render N times in this JVM and report each (benchmarking: the first render includes JIT warm-up).")
     int repeat = 1;

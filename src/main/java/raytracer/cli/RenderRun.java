@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import raytracer.accel.Aggregation;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.ViewPlane;
@@ -14,10 +15,12 @@ import raytracer.image.FalseColor;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.LoadedScene;
+import raytracer.io.scene.MeshCache;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
+import raytracer.render.SceneAnalysis;
 import raytracer.render.Workers;
 import raytracer.tracers.BvhCost;
 
@@ -43,6 +46,7 @@ final class RenderRun {
             long loadStart = System.nanoTime();
             LoadedScene loaded = workers.call(this::loadScene);
             long loadNanos = System.nanoTime() - loadStart;
+            int warned = loaded.report().warnings().size();
             if (!request.quiet()) {
                 report.warnings(loaded.report().warnings());
             }
@@ -51,11 +55,18 @@ final class RenderRun {
             RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
             DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
             long prepareStart = System.nanoTime();
+            // the cost view shows the search structure as the scene gives it: nothing left out
+            SceneAnalysis analysis = request.costView() ? null : SceneAnalysis.apply(world, rayTree);
             workers.call(() -> {
                 world.prepare(objects -> Aggregation.organize(objects, request.accel()));
                 return null;
             });
             long prepareNanos = System.nanoTime() - prepareStart;
+            if (!request.quiet()) {
+                // what preparing found: a cache entry that failed its checksum, one that could not be written
+                List<String> warnings = loaded.report().warnings();
+                report.warnings(warnings.subList(warned, warnings.size()));
+            }
             if (request.costView()) {
                 world.setTracer(BvhCost::new);
             }
@@ -67,6 +78,7 @@ final class RenderRun {
             }
             if (request.stats()) {
                 report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
+                report.skips(analysis, stats);
             }
             return 0;
         }
@@ -109,7 +121,7 @@ final class RenderRun {
 
     private LoadedScene loadScene() throws SceneException, IOException {
         if (request.scene() != null) {
-            return SceneLoader.load(request.scene());
+            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache()));
         }
         try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
             if (in == null) {

@@ -7,9 +7,12 @@ import java.lang.management.MemoryType;
 import java.nio.file.Path;
 import java.util.List;
 import raytracer.accel.ObjectBVH;
+import raytracer.core.Skip;
+import raytracer.core.Skipped;
 import raytracer.core.World;
 import raytracer.io.scene.LoadReport;
 import raytracer.render.RenderStats;
+import raytracer.render.SceneAnalysis;
 
 /**
  * What a run prints on stderr besides errors: the scene's warnings, a line per --repeat render,
@@ -57,12 +60,39 @@ final class RunReport {
         err.println();
         load.statistics().forEach(line -> err.println("stats: " + line));
         boolean topLevelBvh = world.searched().stream().anyMatch(ObjectBVH.class::isInstance);
-        err.printf("stats: prepare (%s) %.3f s, render %.3f s%n", topLevelBvh ? "top-level BVH" : "objects in a list",
-                   prepareNanos / 1e9, s.seconds());
+        err.printf("stats: prepare (%s) %.3f s", topLevelBvh ? "top-level BVH" : "objects in a list", prepareNanos / 1e9);
+        load.prepareTimings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
+        err.printf(", render %.3f s%n", s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
                    s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
         err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
                    s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0));
+    }
+
+    /**
+     * What the scene analysis left out, one line per decision with its reason; the count of what a
+     * kind of decision saved ends its only line, or follows its last.
+     */
+    void skips(SceneAnalysis analysis, RenderStats s) {
+        if (analysis == null) {
+            err.println("stats: skip: nothing (the bvh-cost view shows the scene as given)");
+            return;
+        }
+        List<Skip> skips = analysis.skips();
+        if (skips.isEmpty()) {
+            err.println("stats: skip: nothing (every term, ray and object of the scene may change the image)");
+        }
+        for (int i = 0; i < skips.size(); i++) {
+            Skip skip = skips.get(i);
+            int kind = skip.counter();
+            long sameKind = skips.stream().filter(k -> k.counter() == kind).count();
+            String saved = kind == Skipped.UNCOUNTED ? "" : String.format(" (saves %,d %s)", s.skipped(kind), Skipped.name(kind));
+            err.printf("stats: skip: %s: %s%s%n", skip.what(), skip.why(), sameKind == 1 ? saved : "");
+            boolean lastOfKind = skips.subList(i + 1, skips.size()).stream().noneMatch(k -> k.counter() == kind);
+            if (sameKind > 1 && lastOfKind && kind != Skipped.UNCOUNTED) {
+                err.printf("stats: skip: together these save %,d %s%n", s.skipped(kind), Skipped.name(kind));
+            }
+        }
     }
 
     /** The sum of the peak usage of the heap's memory pools since the JVM started. */

@@ -53,4 +53,14 @@ public interface BRDF {
 
     /** Writes the bihemispherical reflectance rho, used for ambient light, into {@code out}. */
     void rho(ShadeRec sr, MutableVec3 wo, MutableRgb out);
+
+    /** True when f and rho are exactly 0 for every hit and pair of directions (a kd or ks of 0, a black colour). */
+    default boolean isBlack() {
+        return false;
+    }
+
+    /** The same BRDF in a cheaper form where there is one (a constant texture read as a colour), else this. */
+    default BRDF simplified() {
+        return this;
+    }
 }

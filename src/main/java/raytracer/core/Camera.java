@@ -1,5 +1,8 @@
 package raytracer.core;
 
+import java.util.List;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 
 /** Turns an image-plane position into a primary ray (Suffern, chapter 8). */
@@ -15,5 +18,19 @@ public interface Camera {
     /** True when the camera uses lens samples, so the renderer draws them only when needed. */
     default boolean needsLensSamples() {
         return false;
+    }
+
+    /**
+     * Half-spaces whose intersection holds every point that a primary ray of {@code vp} can reach
+     * (the view frustum, or the view box of a parallel projection), for the scene analysis; an
+     * empty list when the camera cannot tell, and then nothing is left out for being unseen.
+     */
+    default List<HalfSpace> viewVolume(ViewPlane vp) {
+        return List.of();
+    }
+
+    /** A box holding the origin of every primary ray of {@code vp} (the eye, the lens, the window), or null when unknown. */
+    default BBox rayOrigins(ViewPlane vp) {
+        return null;
     }
 }

@@ -1,5 +1,7 @@
 package raytracer.core;
 
+import java.util.List;
+import java.util.Locale;
 import raytracer.math.BBox;
 import raytracer.math.Ray;
 
@@ -64,5 +66,46 @@ public abstract class GeometricObject {
 
     public void setCastsShadows(boolean castsShadows) {
         this.castsShadows = castsShadows;
+    }
+
+    /**
+     * The object as it is rendered, made once by {@link World#prepare} for each object the scene
+     * analysis kept: a mesh read from a file builds its BVH here, so that a mesh left out is never
+     * built. Most objects are ready as they are and return themselves.
+     */
+    public GeometricObject prepared() {
+        return this;
+    }
+
+    /**
+     * Every material a hit on this object can be shaded with (a mesh's per-face materials too),
+     * for the scene analysis.
+     */
+    public List<Material> materials() {
+        return material == null ? List.of() : List.of(material);
+    }
+
+    /**
+     * True when no shadow ray that leaves a point of this surface towards a light on its lit side
+     * (the side the geometric normal, turned to the viewer, points to) can hit the object again:
+     * a plane, or the closed surface of a convex solid seen from outside ({@link #isClosed}). It
+     * must hold in floating point too, where the ray's origin is offset by the hit point's error
+     * bound ({@link ShadeRec#spawnRay}).
+     */
+    public boolean cannotShadowItself() {
+        return false;
+    }
+
+    /**
+     * True when the surface encloses a solid: seen from inside, its lit side faces inwards and it
+     * does shadow itself, so {@link #cannotShadowItself} holds only while no ray starts inside it.
+     */
+    public boolean isClosed() {
+        return false;
+    }
+
+    /** What the object is, for messages ("sphere", "mesh dragon.obj"). */
+    public String description() {
+        return getClass().getSimpleName().toLowerCase(Locale.ROOT);
     }
 }

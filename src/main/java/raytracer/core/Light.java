@@ -1,12 +1,16 @@
 package raytracer.core;
 
-import raytracer.math.Ray;
+import raytracer.math.HalfSpace;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
+import raytracer.math.Ray;
 
 /** A light source (Suffern, chapter 14). */
 public abstract class Light {
     private boolean castsShadows = true;
+    private boolean shadowRaysLeftOut;
+    /** Its place in the scene's list of lights as added, kept when the analysis leaves others out. */
+    private int number;
 
     /**
      * Writes the unit direction from the hit towards the light into {@code wi} and returns the
@@ -81,5 +85,61 @@ public abstract class Light {
 
     public void setCastsShadows(boolean castsShadows) {
         this.castsShadows = castsShadows;
+    }
+
+    /**
+     * Stops tracing shadow rays towards this light because the scene analysis proved that none
+     * could be blocked; the shading counts the rays it no longer traces
+     * ({@link Skipped#SHADOW_RAYS}).
+     */
+    public void leaveOutShadowRays() {
+        castsShadows = false;
+        shadowRaysLeftOut = true;
+    }
+
+    /**
+     * Its place in the world's list of lights when it was added ({@link World#addLight}): it numbers
+     * the light's sample dimension, so that leaving another light out moves none of its samples.
+     */
+    public int number() {
+        return number;
+    }
+
+    void setNumber(int number) {
+        this.number = number;
+    }
+
+    /** True after {@link #leaveOutShadowRays}: a shadow ray was due, and is counted instead of traced. */
+    public boolean shadowRaysLeftOut() {
+        return shadowRaysLeftOut;
+    }
+
+    /** True when the light emits nothing at all ({@link #L} is black wherever it is asked). */
+    public boolean isBlack() {
+        return false;
+    }
+
+    /**
+     * True when shading draws samples of this light from the pixel's sample dimensions (lights
+     * with extent). Each value is a function of its pixel, index and dimension, so leaving work
+     * out moves no other; but the dimension is numbered by the light's place in the list, so the
+     * analysis keeps such a light (and, to stay on the safe side, the rays that shade with it).
+     */
+    public boolean drawsSamples() {
+        return false;
+    }
+
+    /**
+     * True when every shadow ray towards this light that starts inside {@code h} ends inside it:
+     * every point of the light lies in {@code h} (for a directional light: its direction does not
+     * lead out of {@code h}). Lights that cannot tell say false.
+     */
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return false;
+    }
+
+    /** What the light is, for messages ("point light"). */
+    public String description() {
+        return getClass().getSimpleName();
     }
 }

@@ -1,12 +1,17 @@
 package raytracer.core;
 
+import java.util.List;
+import java.util.Locale;
 import raytracer.math.MutableRgb;
 
 /**
  * How a surface answers light (Suffern, chapter 14): the radiance leaving a completed hit towards
- * the viewer, in the book's two forms, one per kind of tracer.
+ * the viewer, in the book's two forms, one per kind of tracer. Before rendering, the scene
+ * analysis asks each material what it needs (secondary rays, random numbers) and lets it leave out
+ * the terms that are zero at every hit ({@link #simplify}).
  */
 public abstract class Material {
+    private String name = getClass().getSimpleName().toLowerCase(Locale.ROOT);
 
     /**
      * Suffern's shade (chapters 14 and 24), called by the RayCast and Whitted tracers: writes into
@@ -28,5 +33,50 @@ public abstract class Material {
      */
     public boolean usesTextureCoordinates() {
         return true;
+    }
+
+    /** True when shading may trace reflected rays whose weight is not zero (a mirror, a glossy lobe, glass). */
+    public boolean needsReflection() {
+        return false;
+    }
+
+    /** True when shading may trace refracted rays whose weight is not zero (glass). */
+    public boolean needsRefraction() {
+        return false;
+    }
+
+    /** True when shading may trace secondary rays at all, even rays whose radiance it then multiplies by 0. */
+    public boolean tracesRays() {
+        return needsReflection() || needsRefraction();
+    }
+
+    /**
+     * True when shading draws numbers of its own from the worker's random generator (the
+     * directions of glossy rays): leaving such a material's work out would move every later draw
+     * of the pixel.
+     */
+    public boolean drawsSamples() {
+        return false;
+    }
+
+    /**
+     * Leaves out of the shading, from now on, every term that is zero at every hit of this scene
+     * (a ka, kd or ks of 0, an ambient light of zero radiance, a mirror of weight zero) and reads
+     * constant textures as plain colours; the image stays the same to the bit, since each left-out
+     * term would have added +0. {@code mayDropRays}: rays of weight zero may be left out too,
+     * because nothing in the scene draws random numbers that such a ray's subtree would have drawn.
+     * Returns what was left out.
+     */
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        return List.of();
+    }
+
+    /** The material's name in the scene file (or its MTL file), for messages. */
+    public String name() {
+        return name;
+    }
+
+    public void setName(String name) {
+        this.name = name;
     }
 }

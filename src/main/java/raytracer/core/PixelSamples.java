@@ -28,7 +28,7 @@ public final class PixelSamples {
     public static final int PIXEL = 1;
     public static final int LENS = 2;
     public static final int GLOSSY = 3;
-    /** Light l of the world's list samples dimension LIGHT + l. */
+    /** Light number l ({@link Light#number}) samples dimension LIGHT + l. */
     public static final int LIGHT = 16;
 
     /** Branch slots: which of a hit's rays a path continues along. */

@@ -31,14 +31,6 @@ public final class ShadeRec {
     private final Ray[] localRays = new Ray[MAX_NESTING];
     private int nesting;
 
-    /**
-     * Node stack for BVH traversal, two ints per entry. A traversal nested in another (a mesh inside an object BVH) works
-     * above the outer one's entries, starting at {@link #stackBase}.
-     */
-    public final int[] traversalStack = new int[2 * MAX_NESTING * 64];
-    /** Entry distance of each stacked node, to skip nodes beyond the closest hit found since. */
-    public final double[] traversalEntry = new double[MAX_NESTING * 64];
-    public int stackBase;
     /** Bounding-volume tests made for this ray, for statistics and the BVH-cost view. */
     public long boxTests;
 
@@ -88,7 +80,6 @@ public final class ShadeRec {
         object = null;
         transformCount = 0;
         nesting = 0;
-        stackBase = 0;
     }
 
     /** Called by a leaf that found a hit closer than {@link #t}. */

@@ -1,6 +1,7 @@
 package raytracer.core;
 
 import raytracer.math.MutableRgb;
+import raytracer.math.RGBColor;
 
 /** A colour that varies over a surface (Suffern, chapter 29): looked up from the completed hit. */
 public interface Texture {
@@ -14,5 +15,10 @@ public interface Texture {
      */
     default boolean usesTextureCoordinates() {
         return true;
+    }
+
+    /** The colour of a texture that is the same everywhere, or null: a BRDF may then read it as a plain colour. */
+    default RGBColor constantColor() {
+        return null;
     }
 }

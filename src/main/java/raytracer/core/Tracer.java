@@ -8,4 +8,12 @@ public interface Tracer {
 
     /** Writes the radiance arriving along {@code ray} at recursion {@code depth} into {@code out}. */
     void traceRay(Ray ray, int depth, WorkerScratch scratch, MutableRgb out);
+
+    /**
+     * False when rays below the camera's are not traced into the scene at all (the ray-cast
+     * tracer returns black for them): no object is then seen except by camera and shadow rays.
+     */
+    default boolean tracesSecondaryRays() {
+        return true;
+    }
 }

@@ -3,20 +3,28 @@ package raytracer.core;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
 import raytracer.math.Rng;
+import raytracer.math.ShearedRay;
 import raytracer.math.MutableVec3;
 
 /**
  * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
- * recursion depth, a shadow ray, the sample values and a random generator. Owned by one thread,
- * so nothing on the per-ray path allocates or synchronises. Also counts the rays it traced, and
- * holds the worker's {@link RayTreePolicy}.
+ * recursion depth, a shadow ray, BVH traversal state, the sample values and a random generator.
+ * Owned by one thread, so nothing on the per-ray path allocates or synchronises. Also counts the
+ * rays it traced, and holds the worker's {@link RayTreePolicy}.
  */
 public final class WorkerScratch {
+    private final World world;
+    /** {@link ShadeRecSupply#FRESH}: a new hit record per ray (the allocation study), else the ones below. */
+    private final boolean freshShadeRecs;
     private final ShadeRec[] shadeRecs;
     private final Ray[] rays;
     private final MutableRgb[] colors;
     private final MutableRgb[] weights;
     public final Ray shadowRay = new Ray();
+    /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
+    public final TraversalStack traversals = new TraversalStack();
+    /** The watertight triangle test's constants for the ray whose triangles are being tested. */
+    public final ShearedRay shearedRay = new ShearedRay();
     /** Colour scratch for one light's incident radiance and the BRDF values that meet it. */
     public final MutableRgb lightScratch = new MutableRgb();
     public final MutableRgb brdfScratch = new MutableRgb();
@@ -37,6 +45,8 @@ public final class WorkerScratch {
     public long shadowRays;
     /** Samples whose radiance came out NaN or infinite: dropped, counted, and expected to stay 0. */
     public long nonFiniteSamples;
+    /** Work the scene analysis left out, counted where it would have been done: one count per {@link Skipped} kind. */
+    public final long[] skipped = new long[Skipped.KINDS];
 
     /** Scratch for a render of {@code world} that traces every term of the whole tree. */
     public WorkerScratch(World world) {
@@ -45,6 +55,13 @@ public final class WorkerScratch {
 
     /** Scratch for a render of {@code world} that traces as much of the ray tree as {@code settings} ask. */
     public WorkerScratch(World world, RayTreeSettings settings) {
+        this(world, settings, ShadeRecSupply.REUSE);
+    }
+
+    /** As {@link #WorkerScratch(World, RayTreeSettings)}, with hit records from {@code supply}. */
+    public WorkerScratch(World world, RayTreeSettings settings, ShadeRecSupply supply) {
+        this.world = world;
+        this.freshShadeRecs = supply == ShadeRecSupply.FRESH;
         int levels = world.viewPlane().maxDepth() + 2;
         shadeRecs = new ShadeRec[levels];
         rays = new Ray[levels];
@@ -64,7 +81,10 @@ public final class WorkerScratch {
         policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }
 
-    /** Bounding-volume tests made by all rays of this worker so far. */
+    /**
+     * Bounding-volume tests made by all rays of this worker so far (with {@link ShadeRecSupply#FRESH},
+     * the fresh records' tests are not counted).
+     */
     public long boxTests() {
         long sum = 0;
         for (ShadeRec sr : shadeRecs) {
@@ -88,8 +108,15 @@ public final class WorkerScratch {
         return environments[depth];
     }
 
-    /** The hit record for a ray traced at {@code depth}. */
+    /**
+     * The hit record for a ray traced at {@code depth}: this worker's own for that depth, or a new
+     * one for each call when the supply is {@link ShadeRecSupply#FRESH}. The test of a final field
+     * always goes the same way, so the reusing path pays a predicted branch and no more.
+     */
     public ShadeRec shadeRec(int depth) {
+        if (freshShadeRecs) {
+            return new ShadeRec(world, this);
+        }
         return shadeRecs[depth];
     }
 

@@ -1,7 +1,9 @@
 package raytracer.core;
 
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
 import raytracer.math.RGBColor;
@@ -10,8 +12,10 @@ import raytracer.math.Ray;
 /**
  * The scene (Suffern, chapter 3): objects, lights, camera, view plane, tracer, background and
  * ambient light. Built once, then {@link #prepare}d: the object and light lists become arrays and
- * the scene is looked at once to leave out work it cannot use. How much of the ray tree a render
- * traces is the render's {@link RayTreeSettings}; what loading found is the loader's report.
+ * each object makes itself ready ({@link GeometricObject#prepared}: a mesh builds its BVH). Before
+ * that, the render's scene analysis may leave out objects and lights that cannot change the
+ * image ({@link #leaveOut}). How much of the ray tree a render traces is the render's
+ * {@link RayTreeSettings}; what loading found is the loader's report.
  */
 public final class World {
     private ViewPlane viewPlane;
@@ -38,6 +42,7 @@ public final class World {
     }
 
     public void addLight(Light light) {
+        light.setNumber(lightList.size());
         lightList.add(light);
     }
 
@@ -61,6 +66,16 @@ public final class World {
         this.camera = camera;
     }
 
+    /** Removes an object before {@link #prepare}: it is neither made ready nor searched. */
+    public void leaveOut(GeometricObject object) {
+        objectList.remove(object);
+    }
+
+    /** Removes a light before {@link #prepare}: it is never shaded with. */
+    public void leaveOut(Light light) {
+        lightList.remove(light);
+    }
+
     /** Freezes the lists into arrays, searching the objects as a plain list. */
     public void prepare() {
         prepare(UnaryOperator.identity());
@@ -71,18 +86,22 @@ public final class World {
      * {@code organizer} may regroup the objects (e.g. under a BVH) for faster searching.
      */
     public void prepare(UnaryOperator<List<GeometricObject>> organizer) {
+        objectList.replaceAll(GeometricObject::prepared);
         List<GeometricObject> organized = organizer.apply(List.copyOf(objectList));
         objects = organized.toArray(new GeometricObject[0]);
         shadowCasters = organized.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
         lights = lightList.toArray(new Light[0]);
-        textureCoordinates = objectList.stream().anyMatch(GeometricObject::usesTextureCoordinates);
     }
 
     /**
-     * False once {@link #prepare} found that no object's shading reads u, v (no textures): shapes
-     * then leave out the inverse trigonometry that computes them (a quarter of a simple scene's
-     * sample). True before.
+     * Lets shapes leave out the u, v of their hits (the inverse trigonometry of spheres and
+     * cylinders), once the analysis found that no object's shading reads them.
      */
+    public void leaveOutTextureCoordinates() {
+        textureCoordinates = false;
+    }
+
+    /** Whether shapes must give their hits' u, v: true unless {@link #leaveOutTextureCoordinates} was called. */
     public boolean needsTextureCoordinates() {
         return textureCoordinates;
     }
@@ -138,8 +157,23 @@ public final class World {
         return lights;
     }
 
+    /** The lights as added (and not left out); {@link #lights} is what shading loops over after {@link #prepare}. */
+    public List<Light> lightList() {
+        return List.copyOf(lightList);
+    }
+
+    /** The objects as added (and not left out); after {@link #prepare}, as prepared. */
     public List<GeometricObject> objects() {
         return List.copyOf(objectList);
+    }
+
+    /** Every material the objects can be shaded with, each once, in the order of the objects. */
+    public List<Material> materials() {
+        Set<Material> all = new LinkedHashSet<>();
+        for (GeometricObject object : objectList) {
+            all.addAll(object.materials());
+        }
+        return List.copyOf(all);
     }
 
     /** What {@link #hit} searches since {@link #prepare}: the objects as the organizer grouped them. */

@@ -3,9 +3,10 @@
  * {@link raytracer.core.World}, {@link raytracer.core.ViewPlane}, {@link raytracer.core.ShadeRec},
  * {@link raytracer.core.GeometricObject}, {@link raytracer.core.Material}, {@link raytracer.core.BRDF},
  * {@link raytracer.core.BTDF}, {@link raytracer.core.Light}, {@link raytracer.core.Tracer},
- * {@link raytracer.core.Camera} and {@link raytracer.core.Sampler}; and each worker's scratch
- * ({@link raytracer.core.WorkerScratch}) with its {@link raytracer.core.RayTreePolicy}, made from the
-render's {@link raytracer.core.RayTreeSettings}. The families
- * ({@code shapes}, {@code materials}, ...) implement these; the renderer sees only these.
+ * {@link raytracer.core.Camera} and {@link raytracer.core.Sampler}. The families ({@code shapes},
+ * {@code materials}, ...) implement these; the renderer sees only these. A worker's scratch
+ * ({@link raytracer.core.WorkerScratch}) lives here too, with its {@link raytracer.core.RayTreePolicy}
+ * (made from the render's {@link raytracer.core.RayTreeSettings}) and what the families need per
+ * worker, such as the BVH traversal state ({@link raytracer.core.TraversalStack}).
  */
 package raytracer.core;

@@ -22,7 +22,17 @@ public final class Ambient extends Light {
     }
 
     @Override
+    public boolean isBlack() {
+        return radiance.isBlack();
+    }
+
+    @Override
     public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
+    }
+
+    /** L = ls c. */
+    public RGBColor radiance() {
+        return radiance;
     }
 }

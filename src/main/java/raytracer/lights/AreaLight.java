@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
+import raytracer.math.HalfSpace;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
@@ -95,6 +96,27 @@ public final class AreaLight extends Light {
     @Override
     public double pdf(ShadeRec sr) {
         return inverseArea;
+    }
+
+    @Override
+    public boolean isBlack() {
+        return radiance.isBlack();
+    }
+
+    /** Its samples are a dimension of the pixel's ({@link raytracer.core.PixelSamples}), numbered by its place among the lights. */
+    @Override
+    public boolean drawsSamples() {
+        return true;
+    }
+
+    @Override
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return h.contains(emitter.bounds());
+    }
+
+    @Override
+    public String description() {
+        return emitter.getClass().getSimpleName().replace("Emitter", "").toLowerCase(java.util.Locale.ROOT) + " light";
     }
 
     @Override

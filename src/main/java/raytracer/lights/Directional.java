@@ -3,6 +3,7 @@ package raytracer.lights;
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
 import raytracer.math.RGBColor;
+import raytracer.math.HalfSpace;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
@@ -28,7 +29,33 @@ public final class Directional extends Light {
     }
 
     @Override
+    public boolean isBlack() {
+        return radiance.isBlack();
+    }
+
+    /** A shadow ray runs to infinity along the light's direction: it stays in h if that direction does not lead out. */
+    @Override
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return h.nx() * towardLight.x() + h.ny() * towardLight.y() + h.nz() * towardLight.z() <= 0;
+    }
+
+    @Override
+    public String description() {
+        return "directional light";
+    }
+
+    @Override
     public void L(ShadeRec sr, MutableRgb out) {
         out.set(radiance);
+    }
+
+    /** The unit direction from the scene to the light. */
+    public Vector3D towardLight() {
+        return towardLight;
+    }
+
+    /** L = ls c. */
+    public RGBColor radiance() {
+        return radiance;
     }
 }

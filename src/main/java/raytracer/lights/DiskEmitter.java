@@ -1,5 +1,6 @@
 package raytracer.lights;
 
+import raytracer.math.BBox;
 import raytracer.math.Point3D;
 import raytracer.math.SampleMapping;
 import raytracer.math.MutableVec3;
@@ -48,6 +49,13 @@ final class DiskEmitter implements Emitter {
         // times the length of n's component in the disk's plane
         double nn = n.x * normal.x() + n.y * normal.y() + n.z * normal.z();
         return n.x * cx + n.y * cy + n.z * cz + radius * Math.sqrt(Math.max(0, 1 - nn * nn)) > 0;
+    }
+
+    /** The box of the sphere around the disk: looser than the disk's own, never smaller. */
+    @Override
+    public BBox bounds() {
+        return new BBox(center.x() - radius, center.y() - radius, center.z() - radius,
+                        center.x() + radius, center.y() + radius, center.z() + radius);
     }
 
     @Override

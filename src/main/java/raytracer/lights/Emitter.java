@@ -1,5 +1,6 @@
 package raytracer.lights;
 
+import raytracer.math.BBox;
 import raytracer.math.MutableVec3;
 
 /** The surface of an area light, sampled uniformly by area. */
@@ -9,6 +10,9 @@ interface Emitter {
     void sample(double u, double v, MutableVec3 point, MutableVec3 normal);
 
     double area();
+
+    /** A box around every point of the emitter. */
+    BBox bounds();
 
     /**
      * False only when no point of the emitter can light point {@code p} of a surface with unit

@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
+import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
@@ -33,10 +34,34 @@ public final class PointLight extends Light {
     }
 
     @Override
+    public boolean isBlack() {
+        return intensity.isBlack();
+    }
+
+    @Override
+    public boolean keepsShadowRaysWithin(HalfSpace h) {
+        return h.contains(px, py, pz);
+    }
+
+    @Override
+    public String description() {
+        return "point light";
+    }
+
+    @Override
     public void L(ShadeRec sr, MutableRgb out) {
         double dx = px - sr.hitPoint.x;
         double dy = py - sr.hitPoint.y;
         double dz = pz - sr.hitPoint.z;
         out.set(intensity).scale(1 / (dx * dx + dy * dy + dz * dz));
+    }
+
+    public Point3D position() {
+        return new Point3D(px, py, pz);
+    }
+
+    /** I = ls c. */
+    public RGBColor intensity() {
+        return intensity;
     }
 }

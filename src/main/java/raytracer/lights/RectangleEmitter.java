@@ -1,5 +1,6 @@
 package raytracer.lights;
 
+import raytracer.math.BBox;
 import raytracer.math.Point3D;
 import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
@@ -43,6 +44,14 @@ final class RectangleEmitter implements Emitter {
         double ha = n.x * a.x() + n.y * a.y() + n.z * a.z();
         double hb = n.x * b.x() + n.y * b.y() + n.z * b.z();
         return h + Math.max(ha, 0) + Math.max(hb, 0) > 0;
+    }
+
+    @Override
+    public BBox bounds() {
+        Point3D far = new Point3D(corner.x() + a.x() + b.x(), corner.y() + a.y() + b.y(), corner.z() + a.z() + b.z());
+        return BBox.EMPTY.union(corner).union(far)
+                   .union(new Point3D(corner.x() + a.x(), corner.y() + a.y(), corner.z() + a.z()))
+                   .union(new Point3D(corner.x() + b.x(), corner.y() + b.y(), corner.z() + b.z()));
     }
 
     @Override

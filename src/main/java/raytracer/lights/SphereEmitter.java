@@ -1,5 +1,6 @@
 package raytracer.lights;
 
+import raytracer.math.BBox;
 import raytracer.math.Point3D;
 import raytracer.math.MutableVec3;
 
@@ -32,6 +33,12 @@ final class SphereEmitter implements Emitter {
     @Override
     public boolean mayLight(MutableVec3 p, MutableVec3 n) {
         return n.x * (center.x() - p.x) + n.y * (center.y() - p.y) + n.z * (center.z() - p.z) + radius > 0;
+    }
+
+    @Override
+    public BBox bounds() {
+        return new BBox(center.x() - radius, center.y() - radius, center.z() - radius,
+                        center.x() + radius, center.y() + radius, center.z() + radius);
     }
 
     @Override

@@ -1,5 +1,7 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
@@ -8,8 +10,10 @@ import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.WorkerScratch;
+import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
@@ -31,7 +35,7 @@ import raytracer.math.MutableVec3;
 public final class Dielectric extends Material {
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
-    private final DirectLighting lighting;
+    private DirectLighting lighting;
     private final PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
     private final PerfectTransmitter transmitter;
     private final RGBColor absorption;
@@ -124,6 +128,24 @@ public final class Dielectric extends Material {
         scratch.secondaryRays++;
         scratch.setEnvironment(depth, environment);
         sr.world.tracer().traceRay(ray, depth, scratch, out);
+    }
+
+    @Override
+    public boolean needsReflection() {
+        return true;
+    }
+
+    @Override
+    public boolean needsRefraction() {
+        return true;
+    }
+
+    /** The highlight is glass's only direct light: with ks = 0 the lights are not evaluated on it. */
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        return skips;
     }
 
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */

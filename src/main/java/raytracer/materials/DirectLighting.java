@@ -1,12 +1,16 @@
 package raytracer.materials;
 
+import java.util.List;
 import raytracer.core.BRDF;
 import raytracer.core.Light;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
+import raytracer.core.Skipped;
 import raytracer.core.WorkerScratch;
+import raytracer.core.World;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
@@ -17,7 +21,8 @@ import raytracer.math.MutableVec3;
  * and 15: L = rho_a La + sum over lights of f L cos(theta_i)), {@link #areaLightShade} averages
  * each light's samples (chapter 18: f L G cos(theta_i) / pdf, with G = pdf = 1 for lights without
  * extent, so both give the same for them). A light is skipped when it is behind the surface or a
- * shadow ray finds an occluder.
+ * shadow ray finds an occluder. {@link #simplified} leaves out the terms that are zero at every
+ * hit; each would have added +0, so the image is the same to the bit.
  */
 final class DirectLighting {
 
@@ -41,22 +46,76 @@ final class DirectLighting {
     private final BRDF diffuse;
     private final BRDF specular;
     private final Terms terms;
+    /** Terms left out by {@link #simplified}: zero at every hit, so counted instead of evaluated. */
+    private final boolean ambientZero;
+    private final boolean diffuseZero;
+    private final boolean specularZero;
+    /** All three zero: the surface reflects no direct light, and the lights are not evaluated. */
+    private final boolean dark;
 
     /** {@code specular} may be null (a matte surface). */
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms) {
-        this.ambient = ambient;
-        this.diffuse = diffuse;
-        this.specular = specular;
-        this.terms = terms;
+        this(ambient, diffuse, specular, terms, false, false, false);
     }
 
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular) {
         this(ambient, diffuse, specular, Terms.PHYSICAL);
     }
 
+    private DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms, boolean ambientZero,
+                           boolean diffuseZero, boolean specularZero) {
+        this.ambient = ambient;
+        this.diffuse = diffuse;
+        this.specular = specular;
+        this.terms = terms;
+        this.ambientZero = ambientZero;
+        this.diffuseZero = diffuseZero;
+        this.specularZero = specularZero;
+        this.dark = ambientZero && diffuseZero && (specular == null || specularZero);
+    }
+
+    /**
+     * This lighting without the terms that are zero at every hit of {@code world}'s render (ka,
+     * kd or ks of 0, or an ambient light of zero radiance) and with constant textures read as
+     * colours; what was left out is added to {@code skips}, named for {@code material}.
+     */
+    DirectLighting simplified(World world, String material, List<Skip> skips) {
+        String of = "material '" + material + "'";
+        BRDF a = ambient.simplified();
+        BRDF d = diffuse.simplified();
+        BRDF s = specular == null ? null : specular.simplified();
+        if (a != ambient || d != diffuse || s != specular) {
+            skips.add(new Skip(Skipped.UNCOUNTED, "constant texture read as a plain colour", of));
+        }
+        boolean noAmbient = ambientZero || world.ambient().isBlack() || a.isBlack();
+        boolean noDiffuse = diffuseZero || d.isBlack();
+        boolean noSpecular = specularZero || s != null && s.isBlack();
+        DirectLighting result = new DirectLighting(a, d, s, terms, noAmbient, noDiffuse, noSpecular);
+        if (noAmbient && !ambientZero) {
+            skips.add(new Skip(Skipped.AMBIENT_TERMS, "ambient term not evaluated",
+                               of + (a.isBlack() ? ": its ambient reflectance is 0" : ": the ambient light is black")));
+        }
+        if (result.dark && !dark) {
+            skips.add(new Skip(Skipped.LIGHT_SAMPLES, "lights not evaluated, no shadow rays",
+                               of + ": no term reflects direct light"));
+        } else if (!result.dark) {
+            if (noDiffuse && !diffuseZero) {
+                skips.add(new Skip(Skipped.DIFFUSE_TERMS, "diffuse term not evaluated", of + ": its diffuse reflectance is 0"));
+            }
+            if (noSpecular && !specularZero) {
+                skips.add(new Skip(Skipped.SPECULAR_LOBES, "specular lobe not evaluated", of + ": its specular reflectance is 0"));
+            }
+        }
+        return result;
+    }
+
     /** Suffern's shade: writes into {@code out} the ambient term plus each light's, from its one direction. */
     void shade(ShadeRec sr, MutableRgb out) {
         if (!ambient(sr, out)) {
+            return;
+        }
+        if (dark) {
+            sr.scratch.skipped[Skipped.LIGHT_SAMPLES] += sr.world.lights().length;
             return;
         }
         for (Light light : sr.world.lights()) {
@@ -77,22 +136,29 @@ final class DirectLighting {
         WorkerScratch scratch = sr.scratch;
         PixelSamples samples = scratch.samples;
         MutableVec3 wi = sr.wi;
-        Light[] lights = sr.world.lights();
-        for (int l = 0; l < lights.length; l++) {
-            Light light = lights[l];
+        for (Light light : sr.world.lights()) {
             if (!light.mayIlluminate(sr)) {
                 continue; // every sample would weigh nothing: draw none
             }
             if (!light.hasExtent()) {
-                addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, out);
+                if (dark) {
+                    scratch.skipped[Skipped.LIGHT_SAMPLES]++;
+                } else {
+                    addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, out);
+                }
                 continue;
             }
             Sampler sampler = sr.world.viewPlane().sampler();
             int most = sampler.supportedCount(light.sampleCount());
             int n = sampler.supportedCount(scratch.policy.lightSamples(sr.depth, light.sampleCount()));
+            if (dark) {
+                // nothing to draw: each sample value is a function of its index, so no later one moves
+                scratch.skipped[Skipped.LIGHT_SAMPLES] += n;
+                continue;
+            }
             BRDF lobe = terms == Terms.GLOSSY ? null : specular;
             for (int s = 0; s < n; s++) {
-                samples.get2D(sr.depth, PixelSamples.LIGHT + l, s, most);
+                samples.get2D(sr.depth, PixelSamples.LIGHT + light.number(), s, most);
                 double distance = light.sample(sr, samples.u, samples.v, wi);
                 double g = light.G(sr) / light.pdf(sr);
                 if (g > 0) {
@@ -112,6 +178,11 @@ final class DirectLighting {
         if (!scratch.policy.showsDirect(sr.depth)) {
             out.setBlack();
             return false;
+        }
+        if (ambientZero) {
+            scratch.skipped[Skipped.AMBIENT_TERMS]++;
+            out.setBlack();
+            return true;
         }
         MutableRgb f = scratch.brdfScratch;
         MutableRgb incident = scratch.lightScratch;
@@ -137,7 +208,12 @@ final class DirectLighting {
         }
         MutableRgb f = scratch.brdfScratch;
         MutableRgb incident = scratch.lightScratch;
-        diffuse.f(sr, sr.wo, wi, f);
+        if (diffuseZero) {
+            scratch.skipped[Skipped.DIFFUSE_TERMS]++;
+            f.setBlack();
+        } else {
+            diffuse.f(sr, sr.wo, wi, f);
+        }
         light.L(sr, incident);
         if (terms == Terms.REPORT) {
             f.scale(Math.PI * nDotWi);
@@ -158,12 +234,16 @@ final class DirectLighting {
             if (light.inShadow(shadowRay, distance, sr)) {
                 return;
             }
+        } else if (light.shadowRaysLeftOut()) {
+            scratch.skipped[Skipped.SHADOW_RAYS]++;
         }
         out.addProduct(f, incident, g * weight);
     }
 
-    private static void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f) {
-        if (lobe != null) {
+    private void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f) {
+        if (lobe != null && specularZero) {
+            sr.scratch.skipped[Skipped.SPECULAR_LOBES]++;
+        } else if (lobe != null) {
             MutableRgb fs = sr.scratch.specularScratch;
             lobe.f(sr, sr.wo, sr.wi, fs);
             f.add(fs);

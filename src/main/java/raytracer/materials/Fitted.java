@@ -1,10 +1,14 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.FittedPreset;
 import raytracer.brdf.Lambertian;
 import raytracer.core.BRDF;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
+import raytracer.core.World;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
 
@@ -16,7 +20,7 @@ import raytracer.math.MutableRgb;
  * figure 2's brightness can be matched.
  */
 public final class Fitted extends Material {
-    private final DirectLighting lighting;
+    private DirectLighting lighting;
 
     public Fitted(RGBColor rhoD, BRDF specular, double ka, boolean seedCompatible) {
         this.lighting = new DirectLighting(new Lambertian(ka, rhoD), new Lambertian(1, rhoD), specular,
@@ -41,5 +45,12 @@ public final class Fitted extends Material {
     @Override
     public boolean usesTextureCoordinates() {
         return false;
+    }
+
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        return skips;
     }
 }

@@ -1,13 +1,17 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.core.Background;
 import raytracer.core.Material;
 import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
+import raytracer.core.World;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
@@ -101,6 +105,31 @@ public final class GlossyReflector extends Material {
         out.r += r / n;
         out.g += g / n;
         out.b += b / n;
+    }
+
+    /** True unless ks or the specular colour is 0. */
+    @Override
+    public boolean needsReflection() {
+        return !specular.isBlack();
+    }
+
+    /** Glossy rays are traced even of weight 0 (the lobe's samples are drawn before their weights are known). */
+    @Override
+    public boolean tracesRays() {
+        return true;
+    }
+
+    /** The directions of the glossy rays come from the pixel's sample dimensions (see {@link raytracer.core.Light#drawsSamples}). */
+    @Override
+    public boolean drawsSamples() {
+        return true;
+    }
+
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        return skips;
     }
 
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */

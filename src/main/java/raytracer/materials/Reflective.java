@@ -1,5 +1,7 @@
 package raytracer.materials;
 
+import java.util.ArrayList;
+import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
@@ -8,8 +10,11 @@ import raytracer.core.Material;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skip;
+import raytracer.core.Skipped;
 import raytracer.core.Texture;
 import raytracer.core.WorkerScratch;
+import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
@@ -29,11 +34,16 @@ public final class Reflective extends Material {
     private Background reflectionMap;
     private final double ka;
     private final double kd;
+    private RGBColor cd;
     private final GlossySpecular specular;
     private DirectLighting lighting;
     private final PerfectSpecular mirror;
     private final double kr;
     private final boolean schlick;
+    /** Set by {@link #simplify} when the mirror's weight kr cr is 0: its rays are counted, not traced. */
+    private boolean mirrorLeftOut;
+    /** The max depth when the mirror was left out (the analysis may cut it after): the rays counted are those it allowed. */
+    private int leftOutBelow;
 
     public Reflective(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp,
                       double kr, RGBColor cr, boolean schlick) {
@@ -41,6 +51,7 @@ public final class Reflective extends Material {
         this.schlick = schlick;
         this.ka = ka;
         this.kd = kd;
+        this.cd = cd;
         this.specular = new GlossySpecular(ks, cs, exp, false);
         this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
         this.mirror = new PerfectSpecular(schlick ? 1 : kr, cr);
@@ -49,6 +60,7 @@ public final class Reflective extends Material {
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
         textured = texture.usesTextureCoordinates();
+        this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
 
@@ -69,6 +81,13 @@ public final class Reflective extends Material {
         int next = sr.depth + 1;
         WorkerScratch scratch = sr.scratch;
         RayTreePolicy policy = scratch.policy;
+        if (mirrorLeftOut) {
+            // counted where the ray would have been traced: within the depth, and of weight 0 only with no cutoff
+            if (next <= leftOutBelow && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, 0, 0, 0)) {
+                scratch.skipped[Skipped.SECONDARY_RAYS]++;
+            }
+            return;
+        }
         if (next > sr.world.viewPlane().maxDepth() || !policy.showsReflection(sr.depth)) {
             return;
         }
@@ -87,6 +106,30 @@ public final class Reflective extends Material {
         out.addProduct(incoming, weight, fraction);
     }
 
+    /** True unless the mirror's weight kr cr is 0 (with Schlick's Fresnel: unless cr is black). */
+    @Override
+    public boolean needsReflection() {
+        return !mirror.isBlack();
+    }
+
+    @Override
+    public boolean tracesRays() {
+        return !mirrorLeftOut;
+    }
+
+    @Override
+    public List<Skip> simplify(World world, boolean mayDropRays) {
+        List<Skip> skips = new ArrayList<>();
+        lighting = lighting.simplified(world, name(), skips);
+        if (mirror.isBlack() && mayDropRays && !mirrorLeftOut) {
+            mirrorLeftOut = true;
+            leftOutBelow = world.viewPlane().maxDepth();
+            skips.add(new Skip(Skipped.SECONDARY_RAYS, "mirror rays of weight 0 not traced", "material '" + name()
+                               + "': kr or its colour is 0, and no light or material of the scene draws random numbers"));
+        }
+        return skips;
+    }
+
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
@@ -95,5 +138,36 @@ public final class Reflective extends Material {
     @Override
     public boolean usesTextureCoordinates() {
         return textured;
+    }
+
+    /** The object's own environment for its reflections, or null for the scene's. */
+    public Background reflectionMap() {
+        return reflectionMap;
+    }
+
+    public double ka() {
+        return ka;
+    }
+
+    public double kd() {
+        return kd;
+    }
+
+    /** The diffuse colour, or null when a texture replaced it. */
+    public RGBColor cd() {
+        return cd;
+    }
+
+    public GlossySpecular specular() {
+        return specular;
+    }
+
+    public PerfectSpecular mirror() {
+        return mirror;
+    }
+
+    /** Whether the reflected fraction follows Schlick's approximation (kr at normal incidence). */
+    public boolean schlick() {
+        return schlick;
     }
 }

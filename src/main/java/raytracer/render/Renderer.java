@@ -10,6 +10,8 @@ import raytracer.core.Camera;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.SampleTables;
+import raytracer.core.ShadeRecSupply;
+import raytracer.core.Skipped;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
@@ -35,15 +37,22 @@ public final class Renderer {
     private final long seed;
     /** The render's sample sets, made again if the view plane's sampler or sample count changes. */
     private SampleTables tables;
+    private final ShadeRecSupply shadeRecs;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
 
     /** Renders {@code world}, tracing as much of each ray tree as {@code rayTree} asks, on {@code workers}. */
     public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed) {
+        this(world, rayTree, workers, seed, ShadeRecSupply.REUSE);
+    }
+
+    /** As above, with the workers' hit records from {@code shadeRecs} (the allocation study's alternative). */
+    public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed, ShadeRecSupply shadeRecs) {
         this.world = world;
         this.rayTree = rayTree;
         this.workers = workers;
         this.seed = seed;
+        this.shadeRecs = shadeRecs;
         tables();
     }
 
@@ -71,7 +80,7 @@ public final class Renderer {
         pixelsDone.set(0);
         Queue<WorkerScratch> scratches = new ConcurrentLinkedQueue<>();
         ThreadLocal<WorkerScratch> scratch = ThreadLocal.withInitial(() -> {
-            WorkerScratch s = new WorkerScratch(world, rayTree);
+            WorkerScratch s = new WorkerScratch(world, rayTree, shadeRecs);
             scratches.add(s);
             return s;
         });
@@ -83,7 +92,11 @@ public final class Renderer {
         long shadow = 0;
         long nonFinite = 0;
         long boxTests = 0;
+        long[] skipped = new long[Skipped.KINDS];
         for (WorkerScratch s : scratches) {
+            for (int k = 0; k < Skipped.KINDS; k++) {
+                skipped[k] += s.skipped[k];
+            }
             boxTests += s.boxTests();
             primary += s.primaryRays;
             secondary += s.secondaryRays;
@@ -91,7 +104,7 @@ public final class Renderer {
             nonFinite += s.nonFiniteSamples;
         }
         return new RenderStats(vp.hres(), vp.vres(), vp.numSamples(), workers.threads(), wall,
-                               primary, secondary, shadow, nonFinite, boxTests);
+                               primary, secondary, shadow, nonFinite, boxTests, skipped);
     }
 
     private static List<int[]> tiles(int width, int height) {

@@ -4,6 +4,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveAction;
+import java.util.concurrent.TimeUnit;
 
 /**
  * The one fork/join pool of a run, sized by {@code --threads}: it loads the scene, builds the
@@ -22,7 +23,11 @@ public final class Workers implements AutoCloseable {
         if (threads < 1 || threads > MAX_THREADS) {
             throw new IllegalArgumentException("threads must be 1 to " + MAX_THREADS + ", got " + threads);
         }
-        pool = new ForkJoinPool(threads);
+        // at most `threads` threads: a worker blocked in a join may not be compensated by a spare
+        // thread (the default allows 256), which would run more threads than --threads asked for;
+        // the saturate predicate lets the join wait instead of throwing
+        pool = new ForkJoinPool(threads, ForkJoinPool.defaultForkJoinWorkerThreadFactory, null, false,
+                                0, threads, 1, p -> true, 60, TimeUnit.SECONDS);
     }
 
     public int threads() {

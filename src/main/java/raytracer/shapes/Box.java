@@ -36,12 +36,15 @@ public final class Box extends GeometricObject {
 
     /** The first slab-test distance in (0, tMax): the entry, or the exit from inside; else +infinity. */
     private double slabs(Ray ray, double tMax) {
-        double txNear = ((ray.invDx >= 0 ? x0 : x1) - ray.ox) * ray.invDx;
-        double txFar = ((ray.invDx >= 0 ? x1 : x0) - ray.ox) * ray.invDx;
-        double tyNear = ((ray.invDy >= 0 ? y0 : y1) - ray.oy) * ray.invDy;
-        double tyFar = ((ray.invDy >= 0 ? y1 : y0) - ray.oy) * ray.invDy;
-        double tzNear = ((ray.invDz >= 0 ? z0 : z1) - ray.oz) * ray.invDz;
-        double tzFar = ((ray.invDz >= 0 ? z1 : z0) - ray.oz) * ray.invDz;
+        double invDx = 1.0 / ray.dx;
+        double invDy = 1.0 / ray.dy;
+        double invDz = 1.0 / ray.dz;
+        double txNear = ((invDx >= 0 ? x0 : x1) - ray.ox) * invDx;
+        double txFar = ((invDx >= 0 ? x1 : x0) - ray.ox) * invDx;
+        double tyNear = ((invDy >= 0 ? y0 : y1) - ray.oy) * invDy;
+        double tyFar = ((invDy >= 0 ? y1 : y0) - ray.oy) * invDy;
+        double tzNear = ((invDz >= 0 ? z0 : z1) - ray.oz) * invDz;
+        double tzFar = ((invDz >= 0 ? z1 : z0) - ray.oz) * invDz;
         double tNear = Math.max(txNear, Math.max(tyNear, tzNear));
         double tFar = Math.min(txFar, Math.min(tyFar, tzFar));
         if (!(tNear < tFar)) {

@@ -1,7 +1,9 @@
 package raytracer.shapes;
 
+import java.util.List;
 import raytracer.core.GeometricObject;
 import raytracer.core.LocalFrame;
+import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
 import raytracer.math.Matrix4;
@@ -19,9 +21,37 @@ public final class Instance extends GeometricObject implements LocalFrame {
     private final Matrix4 inverse;
 
     public Instance(GeometricObject object, Matrix4 transform) {
+        this(object, transform, transform.inverse());
+    }
+
+    private Instance(GeometricObject object, Matrix4 forward, Matrix4 inverse) {
         this.object = object;
-        this.forward = transform;
-        this.inverse = transform.inverse();
+        this.forward = forward;
+        this.inverse = inverse;
+    }
+
+    /** The same instance of the object prepared, when preparing made a new one (a mesh's BVH). */
+    @Override
+    public GeometricObject prepared() {
+        GeometricObject inner = object.prepared();
+        if (inner == object) {
+            return this;
+        }
+        Instance copy = new Instance(inner, forward, inverse);
+        copy.setMaterial(getMaterial());
+        copy.setCastsShadows(castsShadows());
+        return copy;
+    }
+
+    /** The instance's own material when it has one (it overrides the object's), else the object's. */
+    @Override
+    public List<Material> materials() {
+        return getMaterial() != null ? List.of(getMaterial()) : object.materials();
+    }
+
+    @Override
+    public String description() {
+        return "instance of " + object.description();
     }
 
     @Override

@@ -61,6 +61,16 @@ public final class Plane extends GeometricObject {
         sr.v = rx * e2.x() + ry * e2.y() + rz * e2.z();
     }
 
+    /**
+     * A shadow ray from a point of the plane towards its lit side starts on that side by the hit's
+     * error bound (gamma(8) times the coordinates' size), more than the rounding of the distance
+     * numerator (gamma(3) of it), so its t is negative.
+     */
+    @Override
+    public boolean cannotShadowItself() {
+        return true;
+    }
+
     @Override
     public BBox boundingBox() {
         return new BBox(Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,

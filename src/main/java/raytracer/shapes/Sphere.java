@@ -2,6 +2,7 @@ package raytracer.shapes;
 
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skipped;
 import raytracer.math.BBox;
 import raytracer.math.Compensated;
 import raytracer.math.Point3D;
@@ -140,6 +141,7 @@ public final class Sphere extends GeometricObject {
         sr.normal.set(nx, ny, nz);
         sr.geometricNormal.set(sr.normal);
         if (!sr.world.needsTextureCoordinates()) {
+            sr.scratch.skipped[Skipped.TEXTURE_COORDINATES]++;
             sr.u = 0;
             sr.v = 0;
             return;
@@ -183,6 +185,22 @@ public final class Sphere extends GeometricObject {
         sr.t = t;
         sr.hitPoint.set(x, y, z);
         sr.hitError.set(ex + off * nx, ey + off * ny, ez + off * nz);
+        return true;
+    }
+
+    /**
+     * A shadow ray from a lit point leaves the sphere: its origin is outside (offset by the hit's
+     * error bound, with c = |o - c|^2 - r^2 recomputed exactly when small, so c &gt; 0) and it heads
+     * away (f . d &gt; 0), so both roots are negative; a grazing ray misses (its line's closest
+     * approach is the origin itself, outside by more than the discriminant's rounding).
+     */
+    @Override
+    public boolean cannotShadowItself() {
+        return true;
+    }
+
+    @Override
+    public boolean isClosed() {
         return true;
     }
 

@@ -5,6 +5,7 @@ import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
+import raytracer.math.ShearedRay;
 import raytracer.math.Vector3D;
 
 /** A single flat triangle (Suffern, section 19.3), hit by the watertight test of {@link Watertight}. */
@@ -35,12 +36,13 @@ public final class Triangle extends GeometricObject {
         if (degenerate) {
             return false;
         }
-        return recordIfCloser(Watertight.intersect(ray, v, 0, 3, 6, sr.t, sr), sr);
+        ShearedRay sheared = sr.scratch.shearedRay.load(ray);
+        return recordIfCloser(Watertight.intersect(sheared, v, 0, 3, 6, sr.t, sr), sr);
     }
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return !degenerate && Watertight.intersect(ray, v, 0, 3, 6, tMax, sr) < tMax;
+        return !degenerate && Watertight.intersect(sr.scratch.shearedRay.load(ray), v, 0, 3, 6, tMax, sr) < tMax;
     }
 
     @Override

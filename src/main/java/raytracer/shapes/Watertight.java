@@ -1,8 +1,8 @@
 package raytracer.shapes;
 
 import raytracer.core.ShadeRec;
-import raytracer.math.Ray;
 import raytracer.math.Rounding;
+import raytracer.math.ShearedRay;
 import raytracer.math.Vector3D;
 
 /**
@@ -19,32 +19,22 @@ public final class Watertight {
     /**
      * Distance to the triangle (vertices at offsets {@code a}, {@code b}, {@code c} of the flat
      * xyz array {@code v}) if it lies in (0, tMax), with the barycentrics of b and c written to
-     * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched.
-     *
-     * <p>Every branch here goes both ways often, so that the JIT never compiles one as a trap that
-     * discards the compiled code the first time it is taken (JFR showed exactly that a second into
-     * the first dragon render): an edge-on or degenerate triangle (det = 0) gets no branch of its
-     * own, its t is infinite or NaN and fails the range test; and 0 &lt; t &lt; tMax is one
-     * comparison, min(t, tMax - t) &gt; 0, since a hit beyond tMax alone is rare (never, for a
-     * shadow ray towards a light outside the mesh). The two are the same test: with gradual
-     * underflow tMax - t &gt; 0 exactly when t &lt; tMax, and a NaN fails both.
-     *
-     * <p>At 351 bytes of bytecode this method is above HotSpot's inlining limit (325), so the BVH
-     * traversal calls it rather than taking it in. Split in two so that it was inlined, the
-     * traversal traced at the same speed once compiled (within 5%, same-JVM A/B) but its compiled
-     * code grew from 0.8 to 2.3 kB of bytecode and took the JIT 150 ms instead of 35 to compile on
-     * this 2-core machine, during the first render: cold renders were 0.1-0.3 s slower.
+     * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched. An edge-on or
+     * degenerate triangle (det = 0) gets an infinite or NaN t, which fails the range test.
      */
-    public static double intersect(Ray ray, double[] v, int a, int b, int c, double tMax, ShadeRec sr) {
-        // the ray's constants once, in locals
-        int kx = ray.kx;
-        int ky = ray.ky;
-        int kz = ray.kz;
-        double ox = ray.originKx;
-        double oy = ray.originKy;
-        double oz = ray.originKz;
-        double sx = ray.shearX;
-        double sy = ray.shearY;
+    public static double intersect(ShearedRay ray, double[] v, int a, int b, int c, double tMax, ShadeRec sr) {
+        // JIT notes (README, "Speed"): no branch here may be rarely taken, since the JIT compiles
+        // such a branch as a trap and taking it discards the compiled code; and the method stays
+        // above the inlining limit, since inlined into the traversal it traced no faster and took
+        // four times as long to compile, during the first render.
+        int kx = ray.kx();
+        int ky = ray.ky();
+        int kz = ray.kz();
+        double ox = ray.originX();
+        double oy = ray.originY();
+        double oz = ray.originZ();
+        double sx = ray.sx();
+        double sy = ray.sy();
         // vertices relative to the ray origin in the (kx, ky, kz) axis order, sheared so that the
         // ray direction becomes (0, 0, 1)
         double az = v[a + kz] - oz;
@@ -60,14 +50,14 @@ public final class Watertight {
         double u = cx * by - cy * bx;
         double w1 = ax * cy - ay * cx;
         double w2 = bx * ay - by * ax;
-        // outside when the edge functions have both signs (a zero counts as either); Math.min/max
-        // rather than six comparisons, which would be branches some of them rarely taken
+        // outside when the edge functions have both signs (a zero counts as either)
         if (Math.min(u, Math.min(w1, w2)) < 0 && Math.max(u, Math.max(w1, w2)) > 0) {
             return Double.POSITIVE_INFINITY;
         }
-        double sz = ray.shearZ;
+        double sz = ray.sz();
         double det = u + w1 + w2;
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
+        // 0 < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
         if (!(Math.min(t, tMax - t) > 0)) {
             return Double.POSITIVE_INFINITY;
         }

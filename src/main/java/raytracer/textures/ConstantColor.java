@@ -25,4 +25,8 @@ public final class ConstantColor implements Texture {
     public boolean usesTextureCoordinates() {
         return false;
     }
+
+    public RGBColor constantColor() {
+        return color;
+    }
 }

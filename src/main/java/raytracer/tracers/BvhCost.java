@@ -28,4 +28,10 @@ public final class BvhCost implements Tracer {
         double tests = sr.boxTests - before;
         out.set(tests, tests, tests);
     }
+
+    /** Only camera rays are traced, and nothing is shaded. */
+    @Override
+    public boolean tracesSecondaryRays() {
+        return false;
+    }
 }

@@ -29,4 +29,10 @@ public final class RayCast implements Tracer {
             sr.material.shade(sr, out);
         }
     }
+
+    /** Secondary rays return black before any object is tested. */
+    @Override
+    public boolean tracesSecondaryRays() {
+        return false;
+    }
 }

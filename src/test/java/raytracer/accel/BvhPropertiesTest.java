@@ -16,6 +16,7 @@ import raytracer.core.ShadeRec;
 import raytracer.math.Matrix4;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
+import raytracer.math.ShearedRay;
 import raytracer.shapes.Box;
 import raytracer.shapes.Instance;
 import raytracer.shapes.Sphere;
@@ -70,10 +71,11 @@ class BvhPropertiesTest {
                 f.randomRay(random, target, ray);
                 sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
                 boolean hit = bvh.hit(ray, sr);
+                ShearedRay sheared = new ShearedRay().load(ray);
                 double best = Double.POSITIVE_INFINITY;
                 int bestTriangle = -1;
                 for (int i = 0; i < n; i++) {
-                    double t = Watertight.intersect(ray, p, 3 * tris[3 * i], 3 * tris[3 * i + 1], 3 * tris[3 * i + 2], best, brute);
+                    double t = Watertight.intersect(sheared, p, 3 * tris[3 * i], 3 * tris[3 * i + 1], 3 * tris[3 * i + 2], best, brute);
                     if (t < best) {
                         best = t;
                         bestTriangle = i;
@@ -83,8 +85,11 @@ class BvhPropertiesTest {
                 assertEquals(bestTriangle >= 0, hit, what + ": hit or miss");
                 if (hit) {
                     assertEquals(best, sr.t, 0, what + ": closest distance");
-                    double own = Watertight.intersect(ray, p, 3 * tris[3 * sr.primitive], 3 * tris[3 * sr.primitive + 1],
-                                                      3 * tris[3 * sr.primitive + 2], Double.POSITIVE_INFINITY, brute);
+                    // sr.primitive numbers the triangles in the tree's leaf order, as the tree's own mesh does
+                    double[] lp = bvh.mesh().positions();
+                    int[] lt = bvh.mesh().triangles();
+                    double own = Watertight.intersect(sheared, lp, 3 * lt[3 * sr.primitive], 3 * lt[3 * sr.primitive + 1],
+                                                      3 * lt[3 * sr.primitive + 2], Double.POSITIVE_INFINITY, brute);
                     assertEquals(best, own, 0, what + ": the triangle it names lies at that distance");
                 }
                 double tMax = hit ? sr.t * random.nextDouble(0.5, 1.5) : Double.POSITIVE_INFINITY;

@@ -1,7 +1,6 @@
 package raytracer.accel;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
-import static org.junit.jupiter.api.Assertions.assertEquals;
+import static raytracer.accel.BvhAssertions.assertSameTree;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -13,18 +12,9 @@ import raytracer.shapes.mesh.Mesh;
 
 /**
  * The parallel median build gives the serial build's tree, array for array: each parallel task
- * writes the records whose numbers its subtree's size fixes in advance.
+ * writes the nodes whose numbers its subtree's size fixes in advance.
  */
 class MedianSplitBuilderTest {
-
-    private static void assertSameTree(FlatBVH serial, FlatBVH parallel) {
-        assertEquals(serial.nodeCount(), parallel.nodeCount(), "node count");
-        assertArrayEquals(serial.rootBox, parallel.rootBox, "root box");
-        assertEquals(serial.rootLink, parallel.rootLink, "root link");
-        assertEquals(serial.rootCount, parallel.rootCount, "root count");
-        assertArrayEquals(serial.order, parallel.order, "leaf order");
-        assertArrayEquals(serial.records, parallel.records, "records");
-    }
 
     private static void assertParallelEqualsSerial(float[] boxes, int leafSize, int threshold) {
         FlatBVH serial = new MedianSplitBuilder(leafSize, Integer.MAX_VALUE).build(boxes.clone());

@@ -10,12 +10,16 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.materials.Matte;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
+import raytracer.math.ShearedRay;
+import raytracer.math.MutableVec3;
 import raytracer.shapes.Watertight;
 import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.TriangleMesh;
 
 class MeshBVHTest {
 
@@ -63,8 +67,9 @@ class MeshBVHTest {
                     r.nextDouble(-1, 1), r.nextDouble(-1, 1), r.nextDouble(-1, 1));
             double best = Double.POSITIVE_INFINITY;
             int bestTri = -1;
+            ShearedRay sheared = new ShearedRay().load(ray);
             for (int t = 0; t < mesh.triangleCount(); t++) {
-                double d = Watertight.intersect(ray, mesh.positions(), mesh.corner(t, 0), mesh.corner(t, 1),
+                double d = Watertight.intersect(sheared, mesh.positions(), mesh.corner(t, 0), mesh.corner(t, 1),
                                                 mesh.corner(t, 2), best, brute);
                 if (d < best) {
                     best = d;
@@ -78,7 +83,7 @@ class MeshBVHTest {
             if (hit) {
                 hits++;
                 assertEquals(best, sr.t, 0, "closest distance, ray " + i);
-                assertEquals(bestTri, sr.primitive);
+                assertEquals(bestTri, bvh.bvh().order[sr.primitive], "the triangle, in the mesh's own numbering");
                 // a shadow ray stopping just short of the closest hit finds nothing
                 assertEquals(false, bvh.shadowHit(ray, Math.nextDown(best), sr));
             }
@@ -101,38 +106,31 @@ class MeshBVHTest {
         assertTrue(bvh.depth() < FlatBVH.MAX_DEPTH);
         // every node's box contains its children's boxes, and every leaf's box its triangles' boxes
         double[] triangles = MeshBVH.triangleBounds(mesh);
-        float[] root = new float[6];
-        for (int k = 0; k < 6; k++) {
-            root[k] = (float) bvh.rootBound(k);
-        }
-        int leaves = checkContains(bvh, root, bvh.rootLink, bvh.rootCount, triangles);
+        int leaves = checkContains(bvh, bvh.rootBox, 0, bvh.rootLink, bvh.rootCount, triangles);
         assertEquals(bvh.nodeCount(), 2 * leaves - 1, "a binary tree has one leaf more than interior nodes");
     }
 
-    /** Checks the subtree under a child entry (link, count) with box {@code box}; returns its leaves. */
-    private static int checkContains(FlatBVH bvh, float[] box, int link, int count, double[] triangles) {
+    /** Checks the subtree of a child (link, count) whose box is {@code box[at .. at + 6)}; returns its leaves. */
+    private static int checkContains(FlatBVH bvh, float[] box, int at, int link, int count, double[] triangles) {
         if (count > 0) {
             for (int i = link; i < link + count; i++) {
                 int t = bvh.order[i];
                 for (int k = 0; k < 3; k++) {
-                    assertTrue(box[k] <= triangles[6 * t + k], "leaf box below triangle " + t);
-                    assertTrue(box[3 + k] >= triangles[6 * t + 3 + k], "leaf box above triangle " + t);
+                    assertTrue(box[at + k] <= triangles[6 * t + k], "leaf box below triangle " + t);
+                    assertTrue(box[at + 3 + k] >= triangles[6 * t + 3 + k], "leaf box above triangle " + t);
                 }
             }
             return 1;
         }
         int leaves = 0;
-        for (int side = 0; side < 2; side++) {
-            int r = FlatBVH.RECORD * link;
-            float[] child = new float[6];
-            for (int k = 0; k < 6; k++) {
-                child[k] = Float.intBitsToFloat(bvh.records[r + (side == 0 ? FlatBVH.LEFT_BOX : FlatBVH.RIGHT_BOX) + k]);
-            }
+        BvhNodes nodes = bvh.nodes;
+        for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
+            int child = BvhNodes.boxAt(link, side);
             for (int k = 0; k < 3; k++) {
-                assertTrue(box[k] <= child[k]);
-                assertTrue(box[3 + k] >= child[3 + k]);
+                assertTrue(box[at + k] <= nodes.bounds[child + k]);
+                assertTrue(box[at + 3 + k] >= nodes.bounds[child + 3 + k]);
             }
-            leaves += checkContains(bvh, child, bvh.records[r + FlatBVH.LINK + side], bvh.records[r + FlatBVH.COUNT + side],
+            leaves += checkContains(bvh, nodes.bounds, child, nodes.link(link, side), nodes.primitiveCount(link, side),
                                     triangles);
         }
         return leaves;
@@ -166,50 +164,62 @@ class MeshBVHTest {
         assertTrue(hits > 50, "enough rays should hit to mean something: " + hits);
     }
 
+    /**
+     * The BVH renumbers the mesh's triangles in its leaf order; completed through it, a hit must
+     * be the one the plain mesh completes: the same point, normals, u/v and material.
+     */
     @Test
-    void theClosestHitInterpolatesNormalsAndUvsAndPicksItsMaterial() {
-        // two triangles, a and b, one above the other; rays from above see b's (material 1) first
-        double[] p = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 1, 2, 0, 1, 0, 2, 1};
-        float s = (float) Math.sqrt(0.5);
-        float[] n = {0, 0, 1, s, 0, s, 0, s, s, 0, 0, 1, s, 0, s, 0, s, s};
-        float[] uv = {0.1f, 0.2f, 0.9f, 0.3f, 0.4f, 0.8f, 0.1f, 0.2f, 0.9f, 0.3f, 0.4f, 0.8f};
-        Mesh mesh = new Mesh(p, n, uv, new int[] {0, 1, 2, 3, 4, 5}, new int[] {0, 1});
-        Matte first = new Matte(0, 1, RGBColor.WHITE);
-        Matte second = new Matte(0, 1, RGBColor.gray(0.5));
-        MeshBVH bvh = new MeshBVH(mesh, new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(mesh)), List.of(first, second));
-        ShadeRec sr = BvhTesting.shadeRec();
-        SplittableRandom r = new SplittableRandom(9);
-        Ray ray = new Ray();
-        for (int i = 0; i < 1000; i++) {
-            double b1 = r.nextDouble(0, 0.5);
-            double b2 = r.nextDouble(0, 0.5);
-            double b0 = 1 - b1 - b2;
-            ray.set(2 * b1, 2 * b2, 5, 0, 0, -1);
-            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
-            assertTrue(bvh.hit(ray, sr));
-            sr.complete(ray);
-            assertEquals(4, sr.t, 1e-12);
-            assertEquals(1, sr.primitive, "the upper triangle");
-            assertSame(second, sr.material, "material id 1");
-            double nx = b1 * s;
-            double ny = b2 * s;
-            double nz = b0 + (b1 + b2) * s;
-            double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-            assertEquals(nx / len, sr.normal.x, 1e-6, "normal x, ray " + i);
-            assertEquals(ny / len, sr.normal.y, 1e-6, "normal y, ray " + i);
-            assertEquals(nz / len, sr.normal.z, 1e-6, "normal z, ray " + i);
-            assertEquals(1, sr.geometricNormal.z, 1e-12, "the face normal stays the face's");
-            assertEquals(b0 * 0.1 + b1 * 0.9 + b2 * 0.4, sr.u, 1e-6, "u, ray " + i);
-            assertEquals(b0 * 0.2 + b1 * 0.3 + b2 * 0.8, sr.v, 1e-6, "v, ray " + i);
+    void hitsCompleteAsOnThePlainMesh() {
+        Mesh sphere = Icosphere.make(3);
+        int n = sphere.triangleCount();
+        int[] ids = new int[n];
+        float[] uv = new float[2 * sphere.vertexCount()];
+        float[] normals = new float[3 * sphere.vertexCount()];
+        for (int t = 0; t < n; t++) {
+            ids[t] = t % 3;
         }
-        // from below, the lower triangle (material 0) faces away: normals turn to the viewer
-        ray.set(0.5, 0.5, -5, 0, 0, 1);
-        sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
-        assertTrue(bvh.hit(ray, sr));
-        sr.complete(ray);
-        assertEquals(0, sr.primitive);
-        assertSame(first, sr.material);
-        assertFalse(sr.frontFace);
-        assertTrue(sr.normal.z < 0 && sr.geometricNormal.z < 0, "both normals face the ray's origin");
+        double[] p = sphere.positions();
+        for (int v = 0; v < sphere.vertexCount(); v++) {
+            uv[2 * v] = (float) p[3 * v];
+            uv[2 * v + 1] = (float) p[3 * v + 2];
+            for (int k = 0; k < 3; k++) {
+                normals[3 * v + k] = (float) p[3 * v + k];
+            }
+        }
+        Mesh mesh = new Mesh(p, normals, uv, sphere.triangles(), ids);
+        List<Material> materials = List.of(new Matte(0, 1, RGBColor.WHITE), new Matte(0, 1, RGBColor.gray(0.5)),
+                                           new Matte(0, 1, RGBColor.gray(0.2)));
+        MeshBVH bvh = new MeshBVH(mesh, new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(mesh)), materials);
+        TriangleMesh plain = new TriangleMesh(mesh, materials);
+        ShadeRec a = BvhTesting.shadeRec();
+        ShadeRec b = BvhTesting.shadeRec();
+        SplittableRandom r = new SplittableRandom(13);
+        Ray ray = new Ray();
+        for (int i = 0; i < 2000; i++) {
+            ray.set(r.nextDouble(-3, 3), r.nextDouble(-3, 3), 4, r.nextDouble(-0.5, 0.5), r.nextDouble(-0.5, 0.5), -1);
+            a.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            b.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            boolean hit = plain.hit(ray, a);
+            assertEquals(hit, bvh.hit(ray, b), "ray " + i);
+            if (!hit) {
+                continue;
+            }
+            a.complete(ray);
+            b.complete(ray);
+            assertEquals(a.t, b.t, 0);
+            assertEquals(a.primitive, bvh.bvh().order[b.primitive], "the same triangle");
+            assertSame(a.material, b.material, "ray " + i);
+            assertEquals(a.u, b.u, 0);
+            assertEquals(a.v, b.v, 0);
+            assertEqualVectors(a.hitPoint, b.hitPoint, "hit point, ray " + i);
+            assertEqualVectors(a.normal, b.normal, "normal, ray " + i);
+            assertEqualVectors(a.geometricNormal, b.geometricNormal, "geometric normal, ray " + i);
+        }
+    }
+
+    private static void assertEqualVectors(MutableVec3 expected, MutableVec3 actual, String what) {
+        assertEquals(expected.x, actual.x, 0, what);
+        assertEquals(expected.y, actual.y, 0, what);
+        assertEquals(expected.z, actual.z, 0, what);
     }
 }

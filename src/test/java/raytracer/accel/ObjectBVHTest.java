@@ -14,12 +14,15 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
+import raytracer.math.Matrix4;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.shapes.Box;
+import raytracer.shapes.Instance;
 import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
+import raytracer.shapes.mesh.Mesh;
 
 /** A BVH over ordinary objects must find exactly what a plain list finds. */
 class ObjectBVHTest {
@@ -73,6 +76,43 @@ class ObjectBVHTest {
             }
         }
         assertTrue(hits > 2_000, "the test rays hit something often enough: " + hits);
+    }
+
+    /**
+     * A BVH over instanced mesh BVHs: each search of a mesh runs inside a search of the scene's
+     * tree and must leave the outer one's stack as it found it.
+     */
+    @Test
+    void nestedSearchesOfMeshesUnderInstancesMatchALinearSearch() {
+        Mesh sphere = Icosphere.make(2);
+        SplittableRandom r = new SplittableRandom(71);
+        List<GeometricObject> objects = new ArrayList<>();
+        for (int i = 0; i < 40; i++) {
+            MeshBVH mesh = new MeshBVH(sphere, new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(sphere)), List.of());
+            double size = r.nextDouble(0.05, 0.5);
+            Matrix4 place = Matrix4.translate(r.nextDouble(-2, 2), r.nextDouble(-2, 2), r.nextDouble(-2, 2))
+                .multiply(Matrix4.scale(size, size, size));
+            objects.add(new Instance(mesh, place));
+        }
+        ObjectBVH bvh = ObjectBVH.build(objects, false);
+        ShadeRec sr = BvhTesting.shadeRec();
+        ShadeRec brute = BvhTesting.shadeRec();
+        Ray ray = new Ray();
+        int hits = 0;
+        for (int i = 0; i < 5_000; i++) {
+            ray.set(r.nextDouble(-3, 3), r.nextDouble(-3, 3), r.nextDouble(-3, 3),
+                    r.nextDouble(-1, 1), r.nextDouble(-1, 1), r.nextDouble(-1, 1));
+            brute.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            for (GeometricObject o : objects) {
+                o.hit(ray, brute);
+            }
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            assertEquals(brute.hitAnObject(), bvh.hit(ray, sr), "ray " + i);
+            assertEquals(brute.t, sr.t, 0, "closest distance, ray " + i);
+            assertEquals(brute.hitAnObject(), bvh.shadowHit(ray, Double.POSITIVE_INFINITY, sr), "shadow ray " + i);
+            hits += brute.hitAnObject() ? 1 : 0;
+        }
+        assertTrue(hits > 500, "the test rays hit something often enough: " + hits);
     }
 
     private static boolean shadowBefore(List<GeometricObject> objects, Ray ray, double tMax, ShadeRec sr) {

@@ -49,7 +49,7 @@ class OnePoolTest {
         long started = ManagementFactory.getThreadMXBean().getTotalStartedThreadCount();
         StringWriter err = new StringWriter();
         int code = RenderCommand.run(new PrintWriter(err, true), scene.toString(), "-o", dir.resolve("s.pfm").toString(),
-                                     "--threads", "1", "--repeat", "2", "--stats");
+                                     "--threads", "1", "--repeat", "2", "--stats", "--no-cache");
         long threads = ManagementFactory.getThreadMXBean().getTotalStartedThreadCount() - started;
         assertEquals(0, code, err.toString());
         assertTrue(err.toString().contains("median BVH of strip.obj"), err.toString());

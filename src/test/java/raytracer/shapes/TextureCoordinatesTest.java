@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 import raytracer.cameras.Pinhole;
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skipped;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
@@ -23,9 +24,9 @@ import raytracer.textures.Checker;
 import raytracer.textures.ConstantColor;
 
 /**
- * A sphere's u, v cost an atan2 and an acos: they are computed only when something in the scene
- * may read them (a texture that is not a constant colour), as the materials and instances say, and
- * then exactly as before.
+ * A sphere's u, v cost an atan2 and an acos: the materials and instances say whether shading may
+ * read them (a texture that is not a constant colour); a sphere leaves them out, and counts it, only
+ * when the world says none is read (the scene analysis decides that), and else computes them exactly.
  */
 class TextureCoordinatesTest {
 
@@ -56,33 +57,36 @@ class TextureCoordinatesTest {
     }
 
     @Test
-    void theSceneSaysWhetherAnythingReadsUv() {
-        assertFalse(prepared(sphere(plain())).needsTextureCoordinates(), "a plain colour");
+    void objectsSayWhetherTheirShadingReadsUv() {
+        assertFalse(sphere(plain()).usesTextureCoordinates(), "a plain colour");
         Matte constant = plain();
         constant.setTexture(new ConstantColor(RGBColor.WHITE));
-        assertFalse(prepared(sphere(constant)).needsTextureCoordinates(), "a constant texture reads no u, v");
-        assertTrue(prepared(sphere(plain()), sphere(textured())).needsTextureCoordinates(), "one checker is enough");
+        assertFalse(sphere(constant).usesTextureCoordinates(), "a constant texture reads no u, v");
+        assertTrue(sphere(textured()).usesTextureCoordinates(), "a checker");
         Instance over = new Instance(sphere(plain()), Matrix4.translate(1, 0, 0));
         over.setMaterial(textured());
-        assertTrue(prepared(over).needsTextureCoordinates(), "the instance's textured material covers a plain sphere");
+        assertTrue(over.usesTextureCoordinates(), "the instance's textured material covers a plain sphere");
         Instance under = new Instance(sphere(textured()), Matrix4.translate(1, 0, 0));
         under.setMaterial(plain());
-        assertFalse(prepared(under).needsTextureCoordinates(), "the instance's plain material replaces a textured one");
-        assertTrue(prepared(new Instance(sphere(textured()), Matrix4.translate(1, 0, 0))).needsTextureCoordinates());
-        assertTrue(prepared(new Sphere(Point3D.ORIGIN, 1)).needsTextureCoordinates(), "without a material, assume so");
+        assertFalse(under.usesTextureCoordinates(), "the instance's plain material replaces a textured one");
+        assertTrue(new Instance(sphere(textured()), Matrix4.translate(1, 0, 0)).usesTextureCoordinates());
+        assertTrue(new Sphere(Point3D.ORIGIN, 1).usesTextureCoordinates(), "without a material, assume so");
     }
 
     @Test
     void uvAreComputedOnlyWhenNeededAndThenExactly() {
         for (boolean textured : new boolean[] {false, true}) {
-            Sphere s = sphere(textured ? textured() : plain());
-            World world = prepared(s);
+            World world = prepared(sphere(textured ? textured() : plain()));
+            if (!textured) {
+                world.leaveOutTextureCoordinates(); // as the scene analysis decides
+            }
             ShadeRec sr = new WorkerScratch(world).shadeRec(0);
             // a ray hitting the sphere at (sin 30, 0, cos 30): u = (atan2(x, z) + pi) / 2 pi, v = 1/2
             Ray ray = new Ray().set(0.5, 0, 5, 0, 0, -1);
             assertTrue(world.hit(ray, sr));
             assertEquals(textured ? (Math.PI / 6 + Math.PI) / (2 * Math.PI) : 0, sr.u, 1e-12, "u, textured " + textured);
             assertEquals(textured ? 0.5 : 0, sr.v, 1e-12, "v, textured " + textured);
+            assertEquals(textured ? 0 : 1, sr.scratch.skipped[Skipped.TEXTURE_COORDINATES], "counted when left out");
         }
     }
 }

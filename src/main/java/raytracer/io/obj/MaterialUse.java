@@ -20,6 +20,7 @@ final class MaterialUse {
     private final List<ObjMaterial> materials = new ArrayList<>();
     private final Map<String, Integer> index = new HashMap<>();
     private final Map<String, ObjMaterial> library = new HashMap<>();
+    private final List<Path> libraries = new ArrayList<>();
     private final Buffers.Ints ids = new Buffers.Ints();
     private int current = -1;
     private boolean used;
@@ -53,7 +54,9 @@ final class MaterialUse {
 
     private void load(String lib, int line) {
         try {
-            library.putAll(MtlLoader.load(folder.resolve(lib).normalize(), warnings));
+            Path file = folder.resolve(lib).normalize();
+            library.putAll(MtlLoader.load(file, warnings));
+            libraries.add(file);
         } catch (ObjException e) {
             warnings.add(objName + ":" + line + ": " + e.getMessage() + "; its materials fall back to grey");
         } catch (InvalidPathException e) {
@@ -101,6 +104,11 @@ final class MaterialUse {
 
     List<ObjMaterial> materials() {
         return List.copyOf(materials);
+    }
+
+    /** The MTL files read, in the order read. */
+    List<Path> libraries() {
+        return List.copyOf(libraries);
     }
 
     /** A material id per triangle, or null when no face named one. */

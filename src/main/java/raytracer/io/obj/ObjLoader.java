@@ -100,7 +100,7 @@ public final class ObjLoader {
         }
         fileWarnings.finish();
         return new ObjModel(MeshAssembly.build(this, smoothNormals), materials.materials(), List.copyOf(warnings),
-                            faces.faces, faces.ngons);
+                            faces.faces, faces.ngons, materials.libraries());
     }
 
     private boolean isEmpty() {

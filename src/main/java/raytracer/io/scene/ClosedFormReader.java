@@ -34,7 +34,7 @@ public final class ClosedFormReader {
     }
 
     private static LitPlane read(Source source, String text) throws SceneException {
-        ViewPlane vp = SceneLoader.load(source, text, OptionalInt.empty()).world().viewPlane();
+        ViewPlane vp = SceneLoader.load(source, text, OptionalInt.empty(), null).world().viewPlane();
         Node root = SceneLoader.root(source, text);
         YamlObject scene = new YamlObject(source, root, "the scene", SceneLoader.SECTIONS);
         String pass = scene.string("pass", "full");

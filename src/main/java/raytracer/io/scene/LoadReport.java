@@ -7,19 +7,26 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * What loading a scene found besides the scene itself: how long its steps took (parsing a mesh,
- * building its BVH), figures of what was built (a mesh's triangles and vertices) and warnings
- * (something odd but harmless, such as a missing texture). Filled by the readers while loading,
- * read by the command line after it.
+ * What loading a scene found besides the scene itself: how long its steps took (parsing a mesh;
+ * when the scene is prepared, building its BVH or reading it from the mesh cache), figures of what
+ * was built (a mesh's triangles and vertices) and warnings (something odd but harmless, such as a
+ * missing texture, or a stale cache). Filled by the readers while loading and by the loaded
+ * meshes while the scene is prepared, read by the command line after each.
  */
 public final class LoadReport {
     private final Map<String, Long> timings = new LinkedHashMap<>();
+    private final Map<String, Long> prepareTimings = new LinkedHashMap<>();
     private final List<String> statistics = new ArrayList<>();
     private final List<String> warnings = new ArrayList<>();
 
     /** Notes how long a step took; a step recorded twice adds up. */
     void recordTiming(String step, long nanos) {
         timings.merge(step, nanos, Long::sum);
+    }
+
+    /** Notes how long a step of preparing the scene took (building a mesh's BVH, reading it from the cache). */
+    void recordPrepareTiming(String step, long nanos) {
+        prepareTimings.merge(step, nanos, Long::sum);
     }
 
     void addStatistic(String line) {
@@ -33,6 +40,11 @@ public final class LoadReport {
     /** Steps and their durations in nanoseconds, in the order they were first recorded. */
     public Map<String, Long> timings() {
         return Collections.unmodifiableMap(timings);
+    }
+
+    /** Steps of {@link raytracer.core.World#prepare} that the loaded objects took, in nanoseconds, in order. */
+    public Map<String, Long> prepareTimings() {
+        return Collections.unmodifiableMap(prepareTimings);
     }
 
     /** One line per figure, for --stats. */

@@ -36,7 +36,9 @@ final class MaterialReader {
 
     /** The material of objects that name none: matte light grey. */
     static Material defaultMaterial() {
-        return new Matte(KA, KD, RGBColor.gray(DEFAULT_GREY));
+        Material m = new Matte(KA, KD, RGBColor.gray(DEFAULT_GREY));
+        m.setName("default");
+        return m;
     }
 
     /** A fitted model: a preset by name, or explicit rho-d, rho-s and alpha / exponent. */
@@ -62,6 +64,7 @@ final class MaterialReader {
 
     static Material read(Source source, String name, Node node, TextureReader textures) throws SceneException {
         Material material = readUntextured(source, name, node);
+        material.setName(name);
         // the keys were checked against the material's type by readUntextured
         YamlObject keys = new YamlObject(source, node, "material '" + name + "'", AnyName.INSTANCE);
         if (keys.has("texture")) {

@@ -3,10 +3,7 @@ package raytracer.io.scene;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import raytracer.accel.FlatBVH;
-import raytracer.accel.MedianSplitBuilder;
 import raytracer.accel.MeshBVH;
-import raytracer.accel.SahBuilder;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.Texture;
@@ -37,69 +34,93 @@ final class MeshReader {
     private MeshReader() {
     }
 
-    static GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures) throws SceneException {
+    static GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures,
+                                MeshCache cache) throws SceneException {
         Path file = o.source().resolve(o.requiredString("file"));
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
         if (!builder.equals("median") && !builder.equals("sah")) {
             throw o.source().error(o.raw("bvh"), "unknown bvh builder '" + builder + "'; allowed: median, sah");
         }
-        long start = System.nanoTime();
-        ObjModel model;
-        try {
-            model = ObjLoader.load(file, smooth);
-        } catch (ObjException e) {
-            throw o.source().error(o.raw("file"), e.getMessage());
+        String name = file.getFileName().toString();
+        // everything that changes what is cached: the parse's smoothing, the builder and its leaves
+        String options = "smooth=" + smooth + " bvh=" + builder + " leaf="
+                         + (builder.equals("median") ? MEDIAN_LEAF_SIZE : SAH_MAX_LEAF_SIZE);
+        MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
+        MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
+        ObjModel model = null;
+        long parseNanos = 0;
+        if (cached == null) {
+            long start = System.nanoTime();
+            model = parse(o, file, smooth);
+            parseNanos = System.nanoTime() - start;
+            report.recordTiming("parse " + name, parseNanos);
+            model.warnings().forEach(report::addWarning);
+            report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
+                                          model.faces()));
+        } else {
+            report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
         }
-        long parsed = System.nanoTime();
+        List<ObjMaterial> objMaterials = cached != null ? cached.materials() : model.materials();
         List<Material> materials = new ArrayList<>();
         if (override == null) {
-            for (ObjMaterial m : model.materials()) {
+            for (ObjMaterial m : objMaterials) {
                 materials.add(fromMtl(m, textures, report));
             }
         }
-        // the build's time includes the triangles' boxes and the mesh's leaf-ordered vertex copy
-        long buildStart = System.nanoTime();
-        FlatBVH bvh = builder.equals("median")
-            ? new MedianSplitBuilder(MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))
-            : new SahBuilder(SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(model.mesh()));
-        MeshBVH mesh = new MeshBVH(model.mesh(), bvh, materials);
-        long built = System.nanoTime();
-        report.recordTiming("parse " + file.getFileName(), parsed - start);
-        report.recordTiming(builder + " BVH of " + file.getFileName() + " (" + bvh.nodeCount() + " nodes)",
-                           built - buildStart);
-        report.addStatistic(statistic(file, model));
-        model.warnings().forEach(report::addWarning);
-        normalMaps(o, model, mesh, textures, report);
+        List<NormalMap> maps = normalMaps(o, objMaterials, textures, report);
+        Build build = new Build(o, file, smooth, builder, materials, report, lookup);
+        ObjModel parsed = model;
+        long parsedIn = parseNanos;
+        PendingMesh mesh = new PendingMesh("mesh " + name, cached != null ? cached.bounds() : model.mesh().bounds(), materials,
+                                           () -> {
+                                               MeshBVH made = cached != null ? build.fromCache() : build.of(parsed, parsedIn);
+                                               for (NormalMap map : maps) {
+                                                   made.triangles().setNormalMap(map.id(), map.texture(), map.tangent());
+                                               }
+                                               return made;
+                                           });
         mesh.setMaterial(override != null ? override
-                         : model.materials().isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
+                         : objMaterials.isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
         return mesh;
     }
 
+    static ObjModel parse(YamlObject o, Path file, boolean smooth) throws SceneException {
+        try {
+            return ObjLoader.load(file, smooth);
+        } catch (ObjException e) {
+            throw o.source().error(o.raw("file"), e.getMessage());
+        }
+    }
+
     /** The mesh as loaded: what it renders (triangles, vertices) and how many faces were n-gons. */
-    static String statistic(Path file, ObjModel model) {
-        return "mesh " + file.getFileName() + ": " + count(model.mesh().triangleCount(), "triangle") + ", "
-               + count(model.mesh().vertexCount(), "vertex") + "; " + model.ngons() + " of " + count(model.faces(), "face")
-               + " had more than 3 corners (fan-triangulated)";
+    static String statistic(String name, int triangles, int vertices, int ngons, int faces) {
+        return "mesh " + name + ": " + count(triangles, "triangle") + ", " + count(vertices, "vertex") + "; " + ngons + " of "
+               + count(faces, "face") + " had more than 3 corners (fan-triangulated)";
     }
 
     private static String count(int n, String what) {
         return n + " " + (n == 1 ? what : what.equals("vertex") ? "vertices" : what + "s");
     }
 
+    /** A normal map for the triangles of one material id. */
+    record NormalMap(int id, Texture texture, boolean tangent) {
+    }
+
     /**
      * The object's {@code normal-map: {file, space: tangent | object}} for all its triangles, or
      * {@code none}; without the key, each MTL material's norm / map_Bump read as a tangent-space
-     * normal map (OpenGL convention).
+     * normal map (OpenGL convention). The textures are read now; they are set when the mesh is made.
      */
-    private static void normalMaps(YamlObject o, ObjModel model, MeshBVH mesh, TextureReader textures, LoadReport report)
-            throws SceneException {
+    private static List<NormalMap> normalMaps(YamlObject o, List<ObjMaterial> materials, TextureReader textures,
+                                              LoadReport report) throws SceneException {
+        List<NormalMap> maps = new ArrayList<>();
         if (o.has("normal-map") && o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
             String value = o.requiredString("normal-map");
             if (!value.equals("none")) {
                 throw o.source().error(o.raw("normal-map"), "'normal-map' is {file, space} or none, got '" + value + "'");
             }
-            return; // none: not even the MTL's
+            return maps; // none: not even the MTL's
         }
         if (o.has("normal-map")) {
             YamlObject map = new YamlObject(o.source(), o.raw("normal-map"), "normal-map", java.util.Set.of("file", "space"));
@@ -108,22 +129,23 @@ final class MeshReader {
                 throw o.source().error(map.raw("space"), "unknown normal-map space '" + space + "'; allowed: object, tangent");
             }
             ImageTexture texture = new ImageTexture(textures.linearImage(o.source().resolve(map.requiredString("file")), map.raw("file")));
-            int ids = Math.max(1, model.materials().size());
+            int ids = Math.max(1, materials.size());
             for (int id = 0; id < ids; id++) {
-                mesh.setNormalMap(id, texture, space.equals("tangent"));
+                maps.add(new NormalMap(id, texture, space.equals("tangent")));
             }
-            return;
+            return maps;
         }
-        for (int id = 0; id < model.materials().size(); id++) {
-            ObjMaterial m = model.materials().get(id);
+        for (int id = 0; id < materials.size(); id++) {
+            ObjMaterial m = materials.get(id);
             if (m.mapBump() != null) {
                 try {
-                    mesh.setNormalMap(id, new ImageTexture(textures.linearImage(m.mapBump(), null)), true);
+                    maps.add(new NormalMap(id, new ImageTexture(textures.linearImage(m.mapBump(), null)), true));
                 } catch (SceneException e) {
                     report.addWarning(e.getMessage() + "; material '" + m.name() + "' has no normal map");
                 }
             }
         }
+        return maps;
     }
 
     /**
@@ -133,6 +155,12 @@ final class MeshReader {
      * lobe. An unreadable map_Kd is a warning.
      */
     static Material fromMtl(ObjMaterial m, TextureReader textures, LoadReport report) {
+        Material material = fromMtlValues(m, textures, report);
+        material.setName(m.name());
+        return material;
+    }
+
+    private static Material fromMtlValues(ObjMaterial m, TextureReader textures, LoadReport report) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
         RGBColor ke = new RGBColor(m.ke()[0], m.ke()[1], m.ke()[2]);

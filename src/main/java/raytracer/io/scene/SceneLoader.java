@@ -59,8 +59,17 @@ public final class SceneLoader {
     private SceneLoader() {
     }
 
+    /** Reads a scene file; its meshes are parsed, not cached. */
     public static LoadedScene load(Path file) throws SceneException {
         return load(file, OptionalInt.empty());
+    }
+
+    /**
+     * As {@link #load(Path)}, with the meshes read from {@code cache} when it has them and written
+     * to it when it does not (null: no cache).
+     */
+    public static LoadedScene load(Path file, MeshCache cache) throws SceneException {
+        return load(source(file), text(file), OptionalInt.empty(), cache);
     }
 
     /**
@@ -68,7 +77,7 @@ public final class SceneLoader {
      * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
      */
     public static LoadedScene load(Path file, OptionalInt areaLightSamples) throws SceneException {
-        return load(source(file), text(file), areaLightSamples);
+        return load(source(file), text(file), areaLightSamples, null);
     }
 
     static Source source(Path file) {
@@ -93,10 +102,10 @@ public final class SceneLoader {
 
     /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
     public static LoadedScene load(String sourceName, String text) throws SceneException {
-        return load(new Source(sourceName, null), text, OptionalInt.empty());
+        return load(new Source(sourceName, null), text, OptionalInt.empty(), null);
     }
 
-    static LoadedScene load(Source source, String text, OptionalInt areaLightSamples) throws SceneException {
+    static LoadedScene load(Source source, String text, OptionalInt areaLightSamples, MeshCache cache) throws SceneException {
         Node root = root(source, text);
         YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
         ViewPlane vp = readImage(source, scene);
@@ -133,7 +142,7 @@ public final class SceneLoader {
             report.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
         }
         for (Node object : objects) {
-            world.addObject(ObjectReader.read(source, object, materials, report, textures));
+            world.addObject(ObjectReader.read(source, object, materials, report, textures, cache));
         }
         return new LoadedScene(world, rayTree, encoding, report);
     }

@@ -89,6 +89,63 @@ public final class Mesh {
         return materialIds;
     }
 
+    /**
+     * The same mesh with its triangles in another order and its vertices renumbered in order of
+     * first use: triangle k of the result is triangle {@code order[k]} of this one, with its
+     * material id, and the vertices of a run of triangles lie together in memory (vertices no
+     * triangle uses go last). Positions, normals and texture coordinates are copied in the new
+     * order; every triangle keeps its corners' values.
+     */
+    public Mesh reordered(int[] order) {
+        if (order.length != triangleCount()) {
+            throw new IllegalArgumentException("need one entry per triangle, got " + order.length + " for " + triangleCount());
+        }
+        int[] newIndex = new int[vertexCount()];
+        Arrays.fill(newIndex, -1);
+        int[] oldIndex = new int[vertexCount()];
+        int used = 0;
+        int[] renumbered = new int[triangles.length];
+        for (int k = 0; k < order.length; k++) {
+            for (int corner = 0; corner < 3; corner++) {
+                int v = triangles[3 * order[k] + corner];
+                if (newIndex[v] < 0) {
+                    newIndex[v] = used;
+                    oldIndex[used++] = v;
+                }
+                renumbered[3 * k + corner] = newIndex[v];
+            }
+        }
+        for (int v = 0; v < vertexCount(); v++) {
+            if (newIndex[v] < 0) {
+                oldIndex[used++] = v;
+            }
+        }
+        int[] ids = null;
+        if (materialIds != null) {
+            ids = new int[materialIds.length];
+            for (int k = 0; k < order.length; k++) {
+                ids[k] = materialIds[order[k]];
+            }
+        }
+        double[] p = new double[positions.length];
+        for (int v = 0; v < oldIndex.length; v++) {
+            System.arraycopy(positions, 3 * oldIndex[v], p, 3 * v, 3);
+        }
+        return new Mesh(p, gather(normals, 3, oldIndex), gather(uvs, 2, oldIndex), renumbered, ids);
+    }
+
+    /** Per-vertex values, {@code width} each, in the order of {@code oldIndex}; null stays null. */
+    private static float[] gather(float[] values, int width, int[] oldIndex) {
+        if (values == null) {
+            return null;
+        }
+        float[] out = new float[values.length];
+        for (int v = 0; v < oldIndex.length; v++) {
+            System.arraycopy(values, width * oldIndex[v], out, width * v, width);
+        }
+        return out;
+    }
+
     public BBox bounds() {
         double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};

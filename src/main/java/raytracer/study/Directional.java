@@ -1,0 +1,18 @@
+package raytracer.study;
+
+import raytracer.math.RGBColor;
+import raytracer.math.Vector3D;
+
+/** Light from one direction with no falloff (Suffern, section 14.4.1). */
+record Directional(Vector3D towardLight, RGBColor radiance, boolean castsShadows) implements Light {
+
+    @Override
+    public Incidence incidence(Hit hit) {
+        return new Incidence(towardLight, Double.POSITIVE_INFINITY);
+    }
+
+    @Override
+    public RGBColor L(Hit hit) {
+        return radiance;
+    }
+}
