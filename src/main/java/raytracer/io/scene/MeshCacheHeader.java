@@ -1,0 +1,134 @@
+package raytracer.io.scene;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import raytracer.io.obj.ObjMaterial;
+import raytracer.io.scene.MeshCacheFile.Header;
+import raytracer.io.scene.MeshCacheFile.Stamp;
+import raytracer.math.BBox;
+
+/**
+ * The header of a mesh cache file in bytes ({@link java.io.DataOutput} form): the stamps of the OBJ
+ * and MTL files it was made from, the options, the counts, the bounds and the MTL materials. Apart
+ * from {@link MeshCacheFile} so that the layout of the arrays reads on its own.
+ */
+final class MeshCacheHeader {
+    private MeshCacheHeader() {
+    }
+
+    static byte[] encode(Header h) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        DataOutputStream out = new DataOutputStream(bytes);
+        writeStamp(out, h.source());
+        out.writeUTF(h.options());
+        out.writeInt(h.libraries().size());
+        for (Stamp library : h.libraries()) {
+            writeStamp(out, library);
+        }
+        out.writeInt(h.faces());
+        out.writeInt(h.ngons());
+        out.writeInt(h.vertices());
+        out.writeInt(h.triangles());
+        out.writeBoolean(h.normals());
+        out.writeBoolean(h.uvs());
+        out.writeBoolean(h.materialIds());
+        BBox b = h.bounds();
+        for (double v : new double[] {b.x0(), b.y0(), b.z0(), b.x1(), b.y1(), b.z1()}) {
+            out.writeDouble(v);
+        }
+        out.writeInt(h.materials().size());
+        for (ObjMaterial m : h.materials()) {
+            writeMaterial(out, m);
+        }
+        out.flush();
+        return bytes.toByteArray();
+    }
+
+    static Header decode(byte[] head) throws IOException {
+        DataInputStream in = new DataInputStream(new ByteArrayInputStream(head));
+        Stamp source = readStamp(in);
+        String options = in.readUTF();
+        List<Stamp> libraries = new ArrayList<>();
+        for (int i = count(in); i > 0; i--) {
+            libraries.add(readStamp(in));
+        }
+        int faces = in.readInt();
+        int ngons = in.readInt();
+        int vertices = in.readInt();
+        int triangles = in.readInt();
+        boolean normals = in.readBoolean();
+        boolean uvs = in.readBoolean();
+        boolean ids = in.readBoolean();
+        BBox bounds = new BBox(in.readDouble(), in.readDouble(), in.readDouble(), in.readDouble(), in.readDouble(),
+                               in.readDouble());
+        List<ObjMaterial> materials = new ArrayList<>();
+        for (int i = count(in); i > 0; i--) {
+            materials.add(readMaterial(in));
+        }
+        if (vertices < 0 || triangles < 1) {
+            throw new IOException("its header counts " + vertices + " vertices and " + triangles + " triangles");
+        }
+        return new Header(source, options, libraries, faces, ngons, vertices, triangles, normals, uvs, ids, bounds,
+                          materials);
+    }
+
+    private static int count(DataInputStream in) throws IOException {
+        int n = in.readInt();
+        if (n < 0 || n > 1 << 20) {
+            throw new IOException("its header lists " + n + " entries");
+        }
+        return n;
+    }
+
+    private static void writeMaterial(DataOutputStream out, ObjMaterial m) throws IOException {
+        out.writeUTF(m.name());
+        for (double[] color : new double[][] {m.kd(), m.ks(), m.ka(), m.ke()}) {
+            for (int k = 0; k < 3; k++) {
+                out.writeDouble(color[k]);
+            }
+        }
+        out.writeDouble(m.ns());
+        out.writeDouble(m.dissolve());
+        out.writeDouble(m.ior());
+        out.writeInt(m.illum());
+        out.writeUTF(m.mapKd() == null ? "" : m.mapKd().toString());
+        out.writeUTF(m.mapBump() == null ? "" : m.mapBump().toString());
+        out.writeDouble(m.bumpScale());
+    }
+
+    private static ObjMaterial readMaterial(DataInputStream in) throws IOException {
+        String name = in.readUTF();
+        double[][] colors = new double[4][3];
+        for (double[] color : colors) {
+            for (int k = 0; k < 3; k++) {
+                color[k] = in.readDouble();
+            }
+        }
+        double ns = in.readDouble();
+        double dissolve = in.readDouble();
+        double ior = in.readDouble();
+        int illum = in.readInt();
+        String mapKd = in.readUTF();
+        String mapBump = in.readUTF();
+        return new ObjMaterial(name, colors[0], colors[1], colors[2], colors[3], ns, dissolve, ior, illum,
+                               mapKd.isEmpty() ? null : Path.of(mapKd), mapBump.isEmpty() ? null : Path.of(mapBump),
+                               in.readDouble());
+    }
+
+    private static void writeStamp(DataOutputStream out, Stamp s) throws IOException {
+        out.writeUTF(s.path());
+        out.writeLong(s.size());
+        out.writeLong(s.modified());
+        out.writeInt(s.crc());
+    }
+
+    private static Stamp readStamp(DataInputStream in) throws IOException {
+        return new Stamp(in.readUTF(), in.readLong(), in.readLong(), in.readInt());
+    }
+}
