@@ -5,12 +5,14 @@ import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
+import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
 import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
+import raytracer.samplers.Samplers;
 
 /**
  * Checks the option values that picocli's types cannot (ranges, names, the output file) and parses
@@ -48,7 +50,8 @@ final class OptionChecks {
         boolean costView = usage(() -> parseView(o.view));
         ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
-        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, o.maxDepth, pass, o.cutoff, encoding);
+        Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
+        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, o.maxDepth, pass, o.cutoff, encoding);
         if (o.noCache && o.cacheDir != null) {
             throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
         }

@@ -38,6 +38,11 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
     Integer samples;
 
+    @Option(names = "--sampler", paramLabel = "NAME",
+            description = "Sample pattern (overrides the scene): " + "regular, random, jittered, n-rooks, multi-jittered, "
+                          + "hammersley or sobol.")
+    String sampler;
+
     @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 

@@ -44,6 +44,14 @@ public abstract class GeometricObject {
         return false;
     }
 
+    /**
+     * Whether shading a hit on this object may read its u, v: its material's answer, and true
+     * without a material (an aggregate, whose leaves carry their own).
+     */
+    public boolean usesTextureCoordinates() {
+        return material == null || material.usesTextureCoordinates();
+    }
+
     public Material getMaterial() {
         return material;
     }

@@ -9,6 +9,8 @@ import raytracer.math.Ray;
 public abstract class Light {
     private boolean castsShadows = true;
     private boolean shadowRaysLeftOut;
+    /** Its place in the scene's list of lights as added, kept when the analysis leaves others out. */
+    private int number;
 
     /**
      * Writes the unit direction from the hit towards the light into {@code wi} and returns the
@@ -38,18 +40,10 @@ public abstract class Light {
 
     /**
      * How many samples this light takes per shaded point at most: 1 for point and directional
-     * lights, the configured number for area lights (Suffern, chapter 18).
+     * lights, the configured number for area lights (Suffern, chapter 18). Their values come from
+     * the worker's {@link PixelSamples}, stratified across the pixel's samples.
      */
     public int sampleCount() {
-        return 1;
-    }
-
-    /**
-     * Draws this light's sample pattern for the hit {@code sr} into {@code sr.scratch.lightX} and
-     * {@code lightY} and returns how many samples to take. Lights without extent draw nothing and
-     * take one.
-     */
-    public int generateSamples(ShadeRec sr) {
         return 1;
     }
 
@@ -103,6 +97,18 @@ public abstract class Light {
         shadowRaysLeftOut = true;
     }
 
+    /**
+     * Its place in the world's list of lights when it was added ({@link World#addLight}): it numbers
+     * the light's sample dimension, so that leaving another light out moves none of its samples.
+     */
+    public int number() {
+        return number;
+    }
+
+    void setNumber(int number) {
+        this.number = number;
+    }
+
     /** True after {@link #leaveOutShadowRays}: a shadow ray was due, and is counted instead of traced. */
     public boolean shadowRaysLeftOut() {
         return shadowRaysLeftOut;
@@ -114,8 +120,10 @@ public abstract class Light {
     }
 
     /**
-     * True when shading draws samples of this light from the worker's random generator (lights
-     * with extent): leaving out a ray whose subtree shades with this light would move later draws.
+     * True when shading draws samples of this light from the pixel's sample dimensions (lights
+     * with extent). Each value is a function of its pixel, index and dimension, so leaving work
+     * out moves no other; but the dimension is numbered by the light's place in the list, so the
+     * analysis keeps such a light (and, to stay on the safe side, the rays that shade with it).
      */
     public boolean drawsSamples() {
         return false;

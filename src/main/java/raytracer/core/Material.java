@@ -27,6 +27,14 @@ public abstract class Material {
      */
     public abstract void areaLightShade(ShadeRec sr, MutableRgb out);
 
+    /**
+     * Whether shading reads the hit's u, v (through a texture). A material that says false lets
+     * the shapes it covers skip computing them; the default says true, to be safe.
+     */
+    public boolean usesTextureCoordinates() {
+        return true;
+    }
+
     /** True when shading may trace reflected rays whose weight is not zero (a mirror, a glossy lobe, glass). */
     public boolean needsReflection() {
         return false;

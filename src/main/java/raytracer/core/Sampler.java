@@ -3,9 +3,11 @@ package raytracer.core;
 import raytracer.math.Rng;
 
 /**
- * Generates sample points in the unit square (Suffern, chapter 5). Unlike the book's sampler, which
- * keeps sample sets and a shared counter, this one draws a fresh pattern per pixel from a generator
- * seeded by the pixel, so images do not depend on how work is split over threads.
+ * Generates sample points in the unit square (Suffern, chapter 5). The book's sampler keeps sets
+ * of points with shuffled indices and a shared counter; here a render keeps its sets in
+ * {@link SampleTables}, and a worker's {@link PixelSamples} picks a set and a shuffle for each pixel
+ * and dimension by hashing, so that images do not depend on how work is split over threads and no
+ * sample's draws shift another's.
  */
 public interface Sampler {
 
@@ -16,4 +18,13 @@ public interface Sampler {
 
     /** Writes {@code n} points of [0,1)^2 into {@code xs}, {@code ys}; n is a supported count. */
     void generate(int n, Rng rng, double[] xs, double[] ys);
+
+    /**
+     * True for sequences whose order carries structure, as in Sobol's, where every aligned block
+     * of 2^k points is itself stratified: their patterns are used in order, so that the values one
+     * sample takes together form such a block. The book's patterns are shuffled instead.
+     */
+    default boolean keepsOrder() {
+        return false;
+    }
 }

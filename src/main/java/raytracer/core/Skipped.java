@@ -18,13 +18,15 @@ public final class Skipped {
     public static final int SPECULAR_LOBES = 4;
     /** Light samples not evaluated on surfaces that reflect no direct light (every term zero). */
     public static final int LIGHT_SAMPLES = 5;
+    /** Hits whose u, v were not computed (a sphere's or cylinder's inverse trigonometry), as no texture reads them. */
+    public static final int TEXTURE_COORDINATES = 6;
     /** How many kinds there are. */
-    public static final int KINDS = 6;
+    public static final int KINDS = 7;
     /** A decision whose saving is not counted while rendering (memory, a build, a lookup). */
     public static final int UNCOUNTED = -1;
 
     private static final String[] NAMES = {"shadow rays", "secondary rays", "ambient terms", "diffuse terms",
-        "specular lobes", "light samples"};
+        "specular lobes", "light samples", "texture coordinates"};
 
     private Skipped() {
     }

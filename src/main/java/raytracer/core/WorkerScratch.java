@@ -8,9 +8,9 @@ import raytracer.math.MutableVec3;
 
 /**
  * Everything one render worker overwrites while tracing: a ShadeRec, a ray and a colour per
- * recursion depth, a shadow ray, BVH traversal state, the random generator and the sample
- * buffers. Owned by one thread, so nothing on the per-ray path allocates or synchronises. Also
- * counts the rays it traced, and holds the worker's {@link RayTreePolicy}.
+ * recursion depth, a shadow ray, BVH traversal state, the sample values and a random generator.
+ * Owned by one thread, so nothing on the per-ray path allocates or synchronises. Also counts the
+ * rays it traced, and holds the worker's {@link RayTreePolicy}.
  */
 public final class WorkerScratch {
     private final World world;
@@ -29,15 +29,14 @@ public final class WorkerScratch {
     public final MutableRgb lightScratch = new MutableRgb();
     public final MutableRgb brdfScratch = new MutableRgb();
     public final MutableRgb specularScratch = new MutableRgb();
+    /**
+     * Free random numbers for code outside the sampled dimensions, reseeded by the renderer for
+     * each pixel sample; the renderer's own values come from {@link #samples}.
+     */
     public final Rng rng = new Rng(0);
     public final MutableVec3 diskScratch = new MutableVec3();
-    public final double[] sampleX;
-    public final double[] sampleY;
-    public final double[] lensX;
-    public final double[] lensY;
-    /** Sample pattern for the area light being shaded. */
-    public final double[] lightX;
-    public final double[] lightY;
+    /** The values of every sampled dimension: pixel position, lens, lights, glossy rays. */
+    public final PixelSamples samples;
     /** The passes and the adaptive cutoff, with this worker's path weights. */
     public final RayTreePolicy policy;
 
@@ -74,20 +73,11 @@ public final class WorkerScratch {
             colors[i] = new MutableRgb();
             weights[i] = new MutableRgb();
         }
-        int n = world.viewPlane().numSamples();
-        sampleX = new double[n];
-        sampleY = new double[n];
-        lensX = new double[n];
-        lensY = new double[n];
-        int lightSamples = 1;
-        for (Light light : world.lights()) {
-            lightSamples = Math.max(lightSamples, world.viewPlane().sampler().supportedCount(light.sampleCount()));
-        }
-        lightX = new double[lightSamples];
-        lightY = new double[lightSamples];
+        samples = new PixelSamples(levels);
+        // a scratch used without a renderer (a test tracing one ray) draws pixel (0, 0), sample 0, seed 0
+        samples.startPixel(new SampleTables(world.viewPlane().sampler(), world.viewPlane().numSamples(), 0), 0, 0);
+        samples.startSample(0);
         environments = new Background[levels];
-        patternX = new double[levels][];
-        patternY = new double[levels][];
         policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }
 
@@ -116,26 +106,6 @@ public final class WorkerScratch {
     /** The environment for escaping rays at {@code depth}, or null for the scene's background. */
     public Background environment(int depth) {
         return environments[depth];
-    }
-
-    private final double[][] patternX;
-    private final double[][] patternY;
-
-    /**
-     * Sample buffers for a material at {@code depth} (glossy rays), each one per depth so that the
-     * recursion does not overwrite a pattern still in use; they grow once to the largest count.
-     */
-    public double[] patternX(int depth, int n) {
-        if (patternX[depth] == null || patternX[depth].length < n) {
-            patternX[depth] = new double[n];
-            patternY[depth] = new double[n];
-        }
-        return patternX[depth];
-    }
-
-    /** The y buffer paired with {@link #patternX}; call that first. */
-    public double[] patternY(int depth) {
-        return patternY[depth];
     }
 
     /**

@@ -29,6 +29,7 @@ public final class World {
     private GeometricObject[] objects = new GeometricObject[0];
     private GeometricObject[] shadowCasters = new GeometricObject[0];
     private Light[] lights = new Light[0];
+    private boolean textureCoordinates = true;
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -41,6 +42,7 @@ public final class World {
     }
 
     public void addLight(Light light) {
+        light.setNumber(lightList.size());
         lightList.add(light);
     }
 
@@ -89,6 +91,19 @@ public final class World {
         objects = organized.toArray(new GeometricObject[0]);
         shadowCasters = organized.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
         lights = lightList.toArray(new Light[0]);
+    }
+
+    /**
+     * Lets shapes leave out the u, v of their hits (the inverse trigonometry of spheres and
+     * cylinders), once the analysis found that no object's shading reads them.
+     */
+    public void leaveOutTextureCoordinates() {
+        textureCoordinates = false;
+    }
+
+    /** Whether shapes must give their hits' u, v: true unless {@link #leaveOutTextureCoordinates} was called. */
+    public boolean needsTextureCoordinates() {
+        return textureCoordinates;
     }
 
     /**

@@ -1,7 +1,6 @@
 package raytracer.lights;
 
 import raytracer.core.Light;
-import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.math.HalfSpace;
 import raytracer.math.RGBColor;
@@ -61,18 +60,6 @@ public final class AreaLight extends Light {
         return samples;
     }
 
-    /**
-     * A fresh stratified pattern per light and point from the image's sampler (Suffern, section
-     * 18.5), of as many samples as the ray tree's policy gives a hit at this depth.
-     */
-    @Override
-    public int generateSamples(ShadeRec sr) {
-        Sampler sampler = sr.world.viewPlane().sampler();
-        int n = sampler.supportedCount(sr.scratch.policy.lightSamples(sr.depth, samples));
-        sampler.generate(n, sr.scratch.rng, sr.scratch.lightX, sr.scratch.lightY);
-        return n;
-    }
-
     /** Samples the emitter: the point and its normal are kept in {@code sr} for {@link #G}. */
     @Override
     public double sample(ShadeRec sr, double u, double v, MutableVec3 wi) {
@@ -116,7 +103,7 @@ public final class AreaLight extends Light {
         return radiance.isBlack();
     }
 
-    /** Its samples come from the worker's random generator ({@link #generateSamples}). */
+    /** Its samples are a dimension of the pixel's ({@link raytracer.core.PixelSamples}), numbered by its place among the lights. */
     @Override
     public boolean drawsSamples() {
         return true;

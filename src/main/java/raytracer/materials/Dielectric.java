@@ -8,6 +8,7 @@ import raytracer.brdf.PerfectSpecular;
 import raytracer.btdf.PerfectTransmitter;
 import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
 import raytracer.core.RayTreePolicy;
@@ -102,13 +103,13 @@ public final class Dielectric extends Material {
             // the refracted part (wi holds its direction); the branch's weight includes the
             // transmittance of the segment that ended here
             if (r < 1 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t * tr, t * tg, t * tb)) {
-                trace(sr, wi, next, scratch, incoming, reflectionMap);
+                trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
                 out.addProduct(incoming, RGBColor.WHITE, t);
             }
             // the mirror part, R (all of it under total internal reflection)
             if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r * tr, r * tg, r * tb)) {
                 mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
-                trace(sr, wi, next, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+                trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
                 out.addProduct(incoming, weight, r);
             }
         }
@@ -119,8 +120,11 @@ public final class Dielectric extends Material {
         }
     }
 
-    private static void trace(ShadeRec sr, MutableVec3 direction, int depth, WorkerScratch scratch, MutableRgb out, Background environment) {
+    /** Traces the hit's refracted or reflected ray ({@code branch}, a {@link PixelSamples} slot) in {@code direction}. */
+    private static void trace(ShadeRec sr, MutableVec3 direction, int branch, WorkerScratch scratch, MutableRgb out, Background environment) {
+        int depth = sr.depth + 1;
         Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
+        scratch.samples.branch(sr.depth, branch, 0, 1);
         scratch.secondaryRays++;
         scratch.setEnvironment(depth, environment);
         sr.world.tracer().traceRay(ray, depth, scratch, out);
@@ -152,5 +156,11 @@ public final class Dielectric extends Material {
     /** The index of refraction inside the surface (outside is vacuum). */
     public double ior() {
         return transmitter.ior();
+    }
+
+    /** No texture: u, v are never read. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
     }
 }

@@ -3,7 +3,9 @@ package raytracer.materials;
 import java.util.List;
 import raytracer.core.BRDF;
 import raytracer.core.Light;
+import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
+import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
 import raytracer.core.Skipped;
@@ -124,26 +126,40 @@ final class DirectLighting {
     /**
      * Suffern's area_light_shade: writes into {@code out} the ambient term plus, for each light, the
      * average over its samples of f L G cos(theta_i) / pdf (one sample for lights without extent).
+     * A light with extent takes the values of its dimension, stratified across the pixel's samples
+     * ({@link PixelSamples}), as many as the ray tree's policy gives a hit at this depth.
      */
     void areaLightShade(ShadeRec sr, MutableRgb out) {
         if (!ambient(sr, out)) {
             return;
         }
         WorkerScratch scratch = sr.scratch;
+        PixelSamples samples = scratch.samples;
         MutableVec3 wi = sr.wi;
         for (Light light : sr.world.lights()) {
             if (!light.mayIlluminate(sr)) {
                 continue; // every sample would weigh nothing: draw none
             }
-            int n = light.generateSamples(sr);
+            if (!light.hasExtent()) {
+                if (dark) {
+                    scratch.skipped[Skipped.LIGHT_SAMPLES]++;
+                } else {
+                    addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, out);
+                }
+                continue;
+            }
+            Sampler sampler = sr.world.viewPlane().sampler();
+            int most = sampler.supportedCount(light.sampleCount());
+            int n = sampler.supportedCount(scratch.policy.lightSamples(sr.depth, light.sampleCount()));
             if (dark) {
-                // the samples are drawn all the same, so that later draws of the pixel do not move
+                // nothing to draw: each sample value is a function of its index, so no later one moves
                 scratch.skipped[Skipped.LIGHT_SAMPLES] += n;
                 continue;
             }
-            BRDF lobe = terms == Terms.GLOSSY && light.hasExtent() ? null : specular;
+            BRDF lobe = terms == Terms.GLOSSY ? null : specular;
             for (int s = 0; s < n; s++) {
-                double distance = light.sample(sr, scratch.lightX[s], scratch.lightY[s], wi);
+                samples.get2D(sr.depth, PixelSamples.LIGHT + light.number(), s, most);
+                double distance = light.sample(sr, samples.u, samples.v, wi);
                 double g = light.G(sr) / light.pdf(sr);
                 if (g > 0) {
                     addSample(sr, light, distance, lobe, g, 1.0 / n, out);

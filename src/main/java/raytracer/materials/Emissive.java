@@ -30,4 +30,10 @@ public final class Emissive extends Material {
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         shade(sr, out);
     }
+
+    /** No texture: u, v are never read. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
 }

@@ -41,6 +41,12 @@ public final class Fitted extends Material {
         lighting.areaLightShade(sr, out);
     }
 
+    /** No texture: u, v are never read. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
+
     @Override
     public List<Skip> simplify(World world, boolean mayDropRays) {
         List<Skip> skips = new ArrayList<>();

@@ -6,7 +6,7 @@ import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.core.Background;
 import raytracer.core.Material;
-import raytracer.core.Sampler;
+import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
 import raytracer.core.Texture;
@@ -25,6 +25,8 @@ import raytracer.math.MutableVec3;
  * point and directional lights, which no ray can hit, still give their highlight directly.
  */
 public final class GlossyReflector extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
     private final double ka;
@@ -47,6 +49,7 @@ public final class GlossyReflector extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular,
                                            DirectLighting.Terms.GLOSSY);
     }
@@ -65,7 +68,8 @@ public final class GlossyReflector extends Material {
 
     /**
      * Adds the average over the glossy rays of the radiance each brings back times its weight
-     * f cos(theta_i) / pdf (Suffern, chapter 25).
+     * f cos(theta_i) / pdf (Suffern, chapter 25). The directions come from the glossy dimension of
+     * this hit's path, stratified across the pixel's samples, and each ray names its own path.
      */
     private void reflectGlossy(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
@@ -73,11 +77,8 @@ public final class GlossyReflector extends Material {
         if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {
             return;
         }
-        Sampler sampler = sr.world.viewPlane().sampler();
-        int n = sampler.supportedCount(samples);
-        double[] xs = scratch.patternX(sr.depth, n);
-        double[] ys = scratch.patternY(sr.depth);
-        sampler.generate(n, scratch.rng, xs, ys);
+        int n = sr.world.viewPlane().sampler().supportedCount(samples);
+        PixelSamples pattern = scratch.samples;
         MutableVec3 wi = sr.wi;
         MutableRgb weight = scratch.weight(sr.depth);
         MutableRgb incoming = scratch.color(next);
@@ -85,13 +86,15 @@ public final class GlossyReflector extends Material {
         double g = 0;
         double b = 0;
         for (int i = 0; i < n; i++) {
-            if (!specular.sampleF(sr, sr.wo, xs[i], ys[i], wi, weight)) {
+            pattern.get2D(sr.depth, PixelSamples.GLOSSY, i, n);
+            if (!specular.sampleF(sr, sr.wo, pattern.u, pattern.v, wi, weight)) {
                 continue; // below the surface: zero, but it counts in the average
             }
             if (!scratch.policy.recordBranchWeight(sr.depth, weight.r / n, weight.g / n, weight.b / n)) {
                 continue;
             }
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
+            pattern.branch(sr.depth, PixelSamples.GLOSSY_RAY, i, n);
             scratch.secondaryRays++;
             scratch.setEnvironment(next, reflectionMap);
             sr.world.tracer().traceRay(ray, next, scratch, incoming);
@@ -116,7 +119,7 @@ public final class GlossyReflector extends Material {
         return true;
     }
 
-    /** The directions of the glossy rays come from the worker's random generator. */
+    /** The directions of the glossy rays come from the pixel's sample dimensions (see {@link raytracer.core.Light#drawsSamples}). */
     @Override
     public boolean drawsSamples() {
         return true;
@@ -132,5 +135,10 @@ public final class GlossyReflector extends Material {
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
+    }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
     }
 }

@@ -13,6 +13,8 @@ import raytracer.math.MutableRgb;
 
 /** A purely diffuse surface (Suffern, section 14.7; area lights: chapter 18): ambient ka cd plus Lambertian kd cd / pi. */
 public final class Matte extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     private final double ka;
     private final double kd;
     private RGBColor cd;
@@ -27,6 +29,7 @@ public final class Matte extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), null);
     }
@@ -42,6 +45,10 @@ public final class Matte extends Material {
     }
 
     @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
+    }
+
     public List<Skip> simplify(World world, boolean mayDropRays) {
         List<Skip> skips = new ArrayList<>();
         lighting = lighting.simplified(world, name(), skips);

@@ -14,6 +14,8 @@ import raytracer.math.MutableRgb;
 
 /** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18). */
 public final class Phong extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     private final double ka;
     private final double kd;
     private RGBColor cd;
@@ -30,6 +32,7 @@ public final class Phong extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
@@ -45,6 +48,10 @@ public final class Phong extends Material {
     }
 
     @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
+    }
+
     public List<Skip> simplify(World world, boolean mayDropRays) {
         List<Skip> skips = new ArrayList<>();
         lighting = lighting.simplified(world, name(), skips);

@@ -7,6 +7,7 @@ import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
 import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
@@ -27,6 +28,8 @@ import raytracer.math.MutableRgb;
  * 3: the brown mirror sphere with 0.5); the mirror's weight is then cr alone.
  */
 public final class Reflective extends Material {
+    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
+    private boolean textured;
     /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
     private Background reflectionMap;
     private final double ka;
@@ -56,6 +59,7 @@ public final class Reflective extends Material {
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
+        textured = texture.usesTextureCoordinates();
         this.cd = null;
         this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
     }
@@ -94,6 +98,7 @@ public final class Reflective extends Material {
             return;
         }
         Ray reflected = sr.spawnRay(sr.wi.x, sr.wi.y, sr.wi.z, scratch.ray(next));
+        scratch.samples.branch(sr.depth, PixelSamples.REFLECTED, 0, 1);
         scratch.secondaryRays++;
         scratch.setEnvironment(next, policy.reflectedEnvironment(sr.depth, reflectionMap));
         MutableRgb incoming = scratch.color(next);
@@ -128,6 +133,11 @@ public final class Reflective extends Material {
     /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
     public void setReflectionMap(Background reflectionMap) {
         this.reflectionMap = reflectionMap;
+    }
+
+    @Override
+    public boolean usesTextureCoordinates() {
+        return textured;
     }
 
     /** The object's own environment for its reflections, or null for the scene's. */

@@ -7,8 +7,9 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
+import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
-import raytracer.core.Sampler;
+import raytracer.core.SampleTables;
 import raytracer.core.ShadeRecSupply;
 import raytracer.core.Skipped;
 import raytracer.core.Tracer;
@@ -18,15 +19,14 @@ import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
-import raytracer.math.Rng;
 import raytracer.math.SampleMapping;
 import raytracer.math.MutableVec3;
 
 /**
  * Renders a prepared {@link World} on the run's {@link Workers}: the image is cut into square tiles,
  * the tile list is split in halves until one tile remains per task, and each worker thread keeps one
- * {@link WorkerScratch}. Every pixel reseeds the worker's generator from (seed, x, y), so the pixels
- * do not depend on the thread count or the order in which tiles finish.
+ * {@link WorkerScratch}. Every sample value is a function of (seed, pixel, sample index, dimension),
+ * so the pixels do not depend on the thread count or the order in which tiles finish.
  */
 public final class Renderer {
     public static final int TILE_SIZE = 32;
@@ -35,6 +35,8 @@ public final class Renderer {
     private final RayTreeSettings rayTree;
     private final Workers workers;
     private final long seed;
+    /** The render's sample sets, made again if the view plane's sampler or sample count changes. */
+    private SampleTables tables;
     private final ShadeRecSupply shadeRecs;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
@@ -51,6 +53,17 @@ public final class Renderer {
         this.workers = workers;
         this.seed = seed;
         this.shadeRecs = shadeRecs;
+        tables();
+    }
+
+    private SampleTables tables() {
+        ViewPlane vp = world.viewPlane();
+        SampleTables t = tables;
+        if (t == null || t.sampler() != vp.sampler() || t.spp() != vp.numSamples()) {
+            t = new SampleTables(vp.sampler(), vp.numSamples(), seed);
+            tables = t;
+        }
+        return t;
     }
 
     /** Fraction of pixels finished, for progress reports from another thread. */
@@ -60,6 +73,7 @@ public final class Renderer {
 
     /** Renders the whole image into {@code film} and returns what it cost. */
     public RenderStats render(Film film) {
+        tables(); // made here, before the workers start, if the view plane changed since
         ViewPlane vp = world.viewPlane();
         List<int[]> tiles = tiles(vp.hres(), vp.vres());
         pixelsTotal = (long) vp.hres() * vp.vres();
@@ -138,25 +152,39 @@ public final class Renderer {
         }
     }
 
-    /** Averages the samples of pixel (x, y) (Suffern, listing 4.2), seeded by the pixel alone. */
+    /**
+     * Averages the samples of pixel (x, y) (Suffern, listing 4.2). Each sample's values, from its
+     * position in the pixel to its last light sample, are functions of (seed, pixel, sample index,
+     * dimension) alone ({@link PixelSamples}).
+     */
     void renderPixel(int x, int y, WorkerScratch s, Film film) {
         ViewPlane vp = world.viewPlane();
         Camera camera = world.camera();
         Tracer tracer = world.tracer();
-        Sampler sampler = vp.sampler();
+        boolean lens = camera.needsLensSamples();
+        PixelSamples samples = s.samples;
         int n = vp.numSamples();
-        s.rng.reseed(Rng.pixelSeed(seed, x, y));
-        sampler.generate(n, s.rng, s.sampleX, s.sampleY);
-        if (camera.needsLensSamples()) {
-            lensSamples(n, sampler, s);
-        }
+        samples.startPixel(tables(), x, y);
         Ray ray = s.ray(0);
         MutableRgb sample = s.color(0);
+        MutableVec3 disk = s.diskScratch;
         double r = 0;
         double g = 0;
         double b = 0;
         for (int i = 0; i < n; i++) {
-            camera.generateRay(vp, x + s.sampleX[i], y + s.sampleY[i], s.lensX[i], s.lensY[i], ray);
+            samples.startSample(i);
+            s.rng.reseed(samples.sampleKey(i));
+            samples.get2D(0, PixelSamples.PIXEL, 0, 1);
+            double px = x + samples.u;
+            double py = y + samples.v;
+            if (lens) {
+                // the concentric map keeps the pattern's strata (Suffern, section 10.4)
+                samples.get2D(0, PixelSamples.LENS, 0, 1);
+                SampleMapping.toUnitDisk(samples.u, samples.v, disk);
+                camera.generateRay(vp, px, py, disk.x, disk.y, ray);
+            } else {
+                camera.generateRay(vp, px, py, 0, 0, ray);
+            }
             s.primaryRays++;
             tracer.traceRay(ray, 0, s, sample);
             if (Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b)) {
@@ -168,24 +196,5 @@ public final class Renderer {
             }
         }
         film.set(x, y, r / n, g / n, b / n);
-    }
-
-    /**
-     * Lens samples from the same pattern, shuffled so they do not correlate with the pixel samples
-     * (Suffern, section 10.4), then mapped to the unit disk.
-     */
-    private static void lensSamples(int n, Sampler sampler, WorkerScratch s) {
-        sampler.generate(n, s.rng, s.lensX, s.lensY);
-        MutableVec3 disk = s.diskScratch;
-        for (int i = n - 1; i >= 0; i--) {
-            int j = s.rng.nextInt(i + 1);
-            double lx = s.lensX[j];
-            double ly = s.lensY[j];
-            s.lensX[j] = s.lensX[i];
-            s.lensY[j] = s.lensY[i];
-            SampleMapping.toUnitDisk(lx, ly, disk);
-            s.lensX[i] = disk.x;
-            s.lensY[i] = disk.y;
-        }
     }
 }

@@ -20,7 +20,7 @@ import raytracer.math.HalfSpace;
  * leave out without changing one bit of the image, and leaves it out before {@link World#prepare}:
  * lights that emit nothing, terms of materials that are zero at every hit, recursion no material
  * uses, objects no ray can reach (a mesh so left out is never built), shadow rays no object can
- * block. Every decision is a proof, not a guess: where the proof needs something the objects
+ * block, texture coordinates no texture reads. Every decision is a proof, not a guess: where the proof needs something the objects
  * cannot tell, nothing is left out. It asks the objects what they need, never their classes.
  * {@link #skips} lists each decision with its reason; the counts of what it saved are the
  * render's ({@link RenderStats#skipped}).
@@ -46,6 +46,7 @@ public final class SceneAnalysis {
         analysis.recursion();
         analysis.unreachableObjects();
         analysis.shadowRays();
+        analysis.textureCoordinates();
         return analysis;
     }
 
@@ -185,6 +186,17 @@ public final class SceneAnalysis {
             }
         }
         return true;
+    }
+
+    /**
+     * No hit needs its u, v when no object left in the scene has a texture that reads them (an
+     * object without a material of its own, such as a mesh with per-face materials, may).
+     */
+    private void textureCoordinates() {
+        if (world.objects().stream().noneMatch(GeometricObject::usesTextureCoordinates)) {
+            world.leaveOutTextureCoordinates();
+            skips.add(new Skip(Skipped.TEXTURE_COORDINATES, "u, v of hits not computed", "no texture reads them"));
+        }
     }
 
     /** True unless the camera's rays start outside the object's box and no material refracts. */

@@ -5,7 +5,7 @@ import raytracer.core.Sampler;
 
 /** Sampler patterns by the names scene files and options use. */
 public final class Samplers {
-    private static final List<String> NAMES = List.of("regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley");
+    private static final List<String> NAMES = List.of("regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley", "sobol");
 
     private Samplers() {
     }
@@ -32,6 +32,7 @@ public final class Samplers {
             case "n-rooks" -> new NRooks();
             case "multi-jittered" -> new MultiJittered();
             case "hammersley" -> new Hammersley();
+            case "sobol" -> new Sobol();
             default -> throw new IllegalArgumentException(
                 "unknown sampler '" + name + "'; allowed: " + String.join(", ", NAMES));
         };

@@ -2,6 +2,7 @@ package raytracer.shapes;
 
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skipped;
 import raytracer.math.BBox;
 import raytracer.math.Ray;
 import raytracer.math.Rounding;
@@ -120,8 +121,12 @@ public final class Cylinder extends GeometricObject {
             double g5 = Rounding.gamma(5);
             sr.hitError.set(g5 * Math.abs(px), g3 * (Math.abs(ray.oy) + Math.abs(t * ray.dy)), g5 * Math.abs(pz));
             sr.normal.set(px / radius, 0, pz / radius);
-            double phi = Math.atan2(px, pz) + Math.PI;
-            sr.u = phi / (2 * Math.PI);
+            if (sr.world.needsTextureCoordinates()) {
+                sr.u = (Math.atan2(px, pz) + Math.PI) / (2 * Math.PI);
+            } else {
+                sr.scratch.skipped[Skipped.TEXTURE_COORDINATES]++;
+                sr.u = 0;
+            }
             sr.v = (py - y0) / (y1 - y0);
         } else {
             py = sr.primitive == TOP ? y1 : y0;

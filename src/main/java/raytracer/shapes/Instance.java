@@ -96,6 +96,12 @@ public final class Instance extends GeometricObject implements LocalFrame {
         }
     }
 
+    /** The instance's own material replaces the object's, when it has one. */
+    @Override
+    public boolean usesTextureCoordinates() {
+        return getMaterial() != null ? getMaterial().usesTextureCoordinates() : object.usesTextureCoordinates();
+    }
+
     @Override
     public BBox boundingBox() {
         BBox box = object.boundingBox();

@@ -2,6 +2,7 @@ package raytracer.shapes;
 
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
+import raytracer.core.Skipped;
 import raytracer.math.BBox;
 import raytracer.math.Compensated;
 import raytracer.math.Point3D;
@@ -139,6 +140,12 @@ public final class Sphere extends GeometricObject {
         }
         sr.normal.set(nx, ny, nz);
         sr.geometricNormal.set(sr.normal);
+        if (!sr.world.needsTextureCoordinates()) {
+            sr.scratch.skipped[Skipped.TEXTURE_COORDINATES]++;
+            sr.u = 0;
+            sr.v = 0;
+            return;
+        }
         // spherical coordinates as in Suffern, section 29.3: u around the y axis, v from the south pole
         double phi = Math.atan2(sr.normal.x, sr.normal.z) + Math.PI;
         sr.u = phi / (2 * Math.PI);

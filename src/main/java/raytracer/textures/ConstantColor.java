@@ -22,6 +22,10 @@ public final class ConstantColor implements Texture {
     }
 
     @Override
+    public boolean usesTextureCoordinates() {
+        return false;
+    }
+
     public RGBColor constantColor() {
         return color;
     }

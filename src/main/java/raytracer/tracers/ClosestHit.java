@@ -14,13 +14,15 @@ final class ClosestHit {
 
     /**
      * Returns the completed closest hit of {@code ray}, traced at {@code depth}, for its material
-     * to shade; or null after writing into {@code out} what the escaping ray sees: the background,
+     * to shade (the rays it traces get a sample path of their own until its material names them);
+     * or null after writing into {@code out} what the escaping ray sees: the background,
      * or the reflection map of the object it left (a per-object environment).
      */
     static ShadeRec find(World world, Ray ray, int depth, WorkerScratch scratch, MutableRgb out) {
         ShadeRec sr = scratch.shadeRec(depth);
         sr.depth = depth;
         if (world.hit(ray, sr)) {
+            scratch.samples.inherit(depth);
             return sr;
         }
         Background environment = scratch.environment(depth);

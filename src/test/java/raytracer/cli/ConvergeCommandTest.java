@@ -166,7 +166,7 @@ class ConvergeCommandTest {
         Path scene = write("spheres.yaml", SPHERES);
         assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be at least 1, got 0");
         assertOneLine(converge(scene.toString(), "--time", "-1"), 2, "--time values must be positive seconds");
-        assertOneLine(converge(scene.toString(), "--config", "sampler=sobol"), 2, "unknown sampler 'sobol'; allowed: regular");
+        assertOneLine(converge(scene.toString(), "--config", "sampler=poisson-disk"), 2, "unknown sampler 'poisson-disk'; allowed: regular");
         assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");
         assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 1, "give a name ending in .png");
         assertOneLine(converge(dir.resolve("missing.yaml").toString()), 1, "no such file");

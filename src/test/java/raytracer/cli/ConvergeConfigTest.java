@@ -36,7 +36,7 @@ class ConvergeConfigTest {
     @Test
     void mistakesSayWhatIsExpected() {
         String[][] cases = {
-            {"sampler=sobol", "unknown sampler 'sobol'; allowed: regular, random"},
+            {"sampler=poisson-disk", "unknown sampler 'poisson-disk'; allowed: regular, random"},
             {"lights=4", "expected key=value pairs joined by commas, with keys cutoff, label, light-samples, sampler; got 'lights=4'"},
             {"light-samples=0", "light-samples must be at least 1, got 0"},
             {"light-samples=many", "light-samples must be a whole number, got 'many'"},

@@ -12,6 +12,7 @@ import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -300,13 +301,32 @@ class RenderCommandTest {
     }
 
     @Test
+    void theSamplerOptionReplacesTheScenesAndRoundsTheCountForIt() throws IOException {
+        // the scene asks for multi-jittered, which rounds 3 samples up to 4; Sobol' takes 3 as they are
+        // (a count the scene's sampler rounded stays rounded: --spp gives it anew)
+        Path s = scene("sampler.yaml", "image: {width: 8, height: 6, samples: 3, sampler: multi-jittered}\n"
+            + "camera: {eye: [0, 0, 5], look-at: [0, 0, 0], fov: 40}\n"
+            + "lights:\n  - {type: rectangle, corner: [-1, 1, 3], edge-a: [2, 0, 0], edge-b: [0, -2, 0], radiance: 3, samples: 2, visible: false}\n"
+            + "materials:\n  m: {type: matte}\n"
+            + "objects:\n  - {type: plane, point: [0, 0, -2], normal: [0, 0, 1], material: m}\n");
+        Result scenes = run(s.toString(), "-o", dir.resolve("mj.pfm").toString());
+        assertTrue(scenes.err().contains("8x6, 4 spp"), scenes.err());
+        Result sobol = run(s.toString(), "-o", dir.resolve("sobol.pfm").toString(), "--sampler", "sobol", "--spp", "3", "--stats");
+        assertEquals(0, sobol.code(), sobol.err());
+        // nothing can shadow the plane: the analysis counts the 48 x 3 x 2 shadow rays instead of tracing them
+        assertTrue(sobol.err().contains("8x6, 3 spp") && sobol.err().contains("(144 primary")
+                   && sobol.err().contains("saves 288 shadow rays"), sobol.err());
+        assertFalse(Arrays.equals(Files.readAllBytes(dir.resolve("mj.pfm")), Files.readAllBytes(dir.resolve("sobol.pfm"))));
+    }
+
+    @Test
     void outOfRangeOptions() {
         String out = dir.resolve("a.png").toString();
         // every bad option value is a usage error: exit code 2 and a pointer to --help
         String[][] cases = {
             {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"}, {"--max-depth", "100000"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
-            {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--frobnicate", "1"},
+            {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--sampler", "poisson-disk"}, {"--frobnicate", "1"},
         };
         for (String[] c : cases) {
             Result r = run("-o", out, c[0], c[1]);

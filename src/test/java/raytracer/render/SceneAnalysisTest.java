@@ -263,4 +263,25 @@ class SceneAnalysisTest {
         assertTrue(in.report().prepareTimings().keySet().stream().anyMatch(k -> k.startsWith("median BVH of tri.obj")),
                    in.report().prepareTimings().toString());
     }
+
+    // ---- texture coordinates ----
+
+    @Test
+    void untexturedSpheresAndCylindersLeaveOutTheirTextureCoordinates() throws IOException, SceneException {
+        String scene = VIEW + "materials:\n  m: {type: matte, %s}\n"
+                       + "lights:\n  - {type: point, position: [1, 4, 2], intensity: 30}\n"
+                       + "objects:\n  - {type: plane, normal: [0, 1, 0]}\n"
+                       + "  - {type: sphere, center: [-1, 1, 0], radius: 1, material: m}\n"
+                       + "  - {type: cylinder, radius: 0.5, top: 2, transform: [{translate: [1.5, 0, 0]}], material: m}\n";
+        Outcome plain = both(scene.formatted("color: [0.8, 0.5, 0.2]"));
+        assertTrue(plain.decided("u, v of hits not computed"), plain.list());
+        assertTrue(plain.with().skipped(Skipped.TEXTURE_COORDINATES) > 0);
+        assertEquals(0, plain.without().skipped(Skipped.TEXTURE_COORDINATES), "computed when not decided");
+        Outcome constant = both(scene.formatted("texture: {type: constant, color: [0.8, 0.5, 0.2]}"));
+        assertTrue(constant.decided("u, v of hits not computed"), constant.list());
+        // a checker on both shapes: u, v left out would paint them in one colour
+        Outcome checker = both(scene.formatted("texture: {type: checker, size: 0.2}"));
+        assertFalse(checker.decided("u, v"), checker.list());
+        assertEquals(0, checker.with().skipped(Skipped.TEXTURE_COORDINATES));
+    }
 }

@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.core.Sampler;
+import raytracer.math.Hashes;
 import raytracer.math.Rng;
 
 class SamplerPropertiesTest {
@@ -78,7 +79,7 @@ class SamplerPropertiesTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley"})
+    @ValueSource(strings = {"regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley", "sobol"})
     void pointsStayInTheUnitSquare(String name) {
         Sampler s = Samplers.byName(name);
         for (int n : new int[] {1, 2, 9, 64, 100}) {
@@ -179,12 +180,95 @@ class SamplerPropertiesTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"random", "jittered", "n-rooks", "multi-jittered"})
+    @ValueSource(strings = {"random", "jittered", "n-rooks", "multi-jittered", "sobol"})
     void sameSeedSamePointsOtherSeedOtherPoints(String name) {
         Sampler s = Samplers.byName(name);
         int n = s.supportedCount(16);
         assertArrayEquals(draw(s, n, 7)[0], draw(s, n, 7)[0]);
         assertFalse(Arrays.equals(draw(s, n, 7)[0], draw(s, n, 8)[0]));
+    }
+
+    /** Binomial coefficient c choose r, mod 2, by Pascal's rule: an entry of Sobol's second generator matrix. */
+    private static int pascalMod2(int r, int c) {
+        int[] row = {1};
+        for (int k = 1; k <= c; k++) {
+            int[] next = new int[k + 1];
+            next[0] = 1;
+            next[k] = 1;
+            for (int j = 1; j < k; j++) {
+                next[j] = (row[j - 1] + row[j]) % 2;
+            }
+            row = next;
+        }
+        return r <= c ? row[r] : 0;
+    }
+
+    @Test
+    void sobolsSecondDimensionIsThePascalMatrixMod2() {
+        // digit r + 1 of y(i) is the sum mod 2 over the bits c of i of (c choose r) (Sobol's second
+        // dimension; its direction numbers are all 1): computed here from the binomials
+        for (int i = 0; i < 1024; i++) {
+            int expected = 0;
+            for (int r = 0; r < 31; r++) {
+                int digit = 0;
+                for (int c = 0; c < 11; c++) {
+                    digit ^= (i >>> c & 1) * pascalMod2(r, c);
+                }
+                expected |= digit << r;
+            }
+            assertEquals(expected, Sobol.secondDimensionReversed(i), "y(" + i + ")");
+        }
+        // the first 8 values of y, digits read the usual way: 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8
+        double[] y = new double[8];
+        for (int i = 0; i < 8; i++) {
+            y[i] = (Integer.reverse(Sobol.secondDimensionReversed(i)) & 0xffffffffL) * 0x1.0p-32;
+        }
+        assertArrayEquals(new double[] {0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875}, y, 0);
+    }
+
+    @Test
+    void scrambledSobolIsA02SequenceInEveryBlock() {
+        // every aligned block of 2^m points puts one point in each elementary box of area 2^-m,
+        // 2^a x 2^(m-a) cells, for every a: the (0,2)-sequence property, which Owen's scrambling keeps
+        Sobol sobol = new Sobol();
+        double[] xs = new double[256];
+        double[] ys = new double[256];
+        for (long seed = 0; seed < 30; seed++) {
+            sobol.generate(256, new Rng(seed), xs, ys);
+            for (int m = 0; m <= 8; m++) {
+                int size = 1 << m;
+                for (int from = 0; from < 256; from += size) {
+                    for (int a = 0; a <= m; a++) {
+                        int cols = 1 << a;
+                        int rows = size / cols;
+                        int[] cells = new int[size];
+                        for (int i = from; i < from + size; i++) {
+                            cells[(int) (ys[i] * rows) * cols + (int) (xs[i] * cols)]++;
+                        }
+                        assertTrue(Arrays.stream(cells).allMatch(c -> c == 1),
+                                   "seed " + seed + ", points " + from + ".." + (from + size - 1) + ", " + cols + " x " + rows);
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void owenScramblingMakesEachPointUniform() {
+        // point 5 of the sequence over 6,400 scrambles, in 8 x 8 cells; and inside its stratum of 1/8
+        // (a scramble that flipped only the leading digits would leave the finer ones fixed)
+        Sobol sobol = new Sobol();
+        int[] cells = new int[64];
+        int[] fine = new int[10];
+        for (int s = 0; s < 6400; s++) {
+            long p = Sobol.point(5, Hashes.mix(s));
+            double x = (p >>> 32) * 0x1.0p-32;
+            double y = (p & 0xffffffffL) * 0x1.0p-32;
+            cells[(int) (y * 8) * 8 + (int) (x * 8)]++;
+            fine[(int) ((x * 8 - Math.floor(x * 8)) * 10)]++;
+        }
+        assertUniform(cells, "point 5 over scrambles");
+        assertUniform(fine, "point 5 within its column of 1/8");
     }
 
     @Test
@@ -199,7 +283,7 @@ class SamplerPropertiesTest {
 
     @Test
     void unknownNameListsTheAllowedOnes() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Samplers.byName("sobol"));
-        assertTrue(e.getMessage().contains("sobol") && e.getMessage().contains("multi-jittered"), e.getMessage());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Samplers.byName("poisson-disk"));
+        assertTrue(e.getMessage().contains("poisson-disk") && e.getMessage().contains("multi-jittered"), e.getMessage());
     }
 }

@@ -165,7 +165,7 @@ class SceneLoaderTest {
         assertMessage(error(BASE.replace("max-depth: 2", "max-depth: 100000")), "s.yaml:1:74:",
                       "'max-depth' in image must be at most 1000, got 100000");
         assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
-        assertMessage(error(BASE.replace("sampler: jittered", "sampler: sobol")), "s.yaml:1:", "sobol", "multi-jittered");
+        assertMessage(error(BASE.replace("sampler: jittered", "sampler: poisson-disk")), "s.yaml:1:", "poisson-disk", "multi-jittered");
         assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, height");
         assertMessage(error(BASE.replace("image: {", "image: {encoding: gamma, ")), "s.yaml:1:", "gamma", "linear, srgb");
         assertMessage(error(BASE.replace("image: {", "image: {cutoff: -0.1, ")), "s.yaml:1:", "'cutoff'", "at least 0");
