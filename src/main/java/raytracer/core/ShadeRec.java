@@ -106,6 +106,11 @@ public final class ShadeRec {
         nesting--;
     }
 
+    /** True when the closest hit was found inside an instance, in its object's local space. */
+    public boolean isTransformed() {
+        return transformCount > 0;
+    }
+
     public boolean hitAnObject() {
         return object != null;
     }

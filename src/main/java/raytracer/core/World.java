@@ -122,15 +122,33 @@ public final class World {
         return true;
     }
 
-    /** True when any shadow-casting object lies on {@code ray} with 0 &lt; t &lt; tMax. */
+    /**
+     * True when any shadow-casting object lies on {@code ray} with 0 &lt; t &lt; tMax. {@code ray}
+     * leaves {@code sr}'s hit towards its lit side ({@link ShadeRec#spawnRay}); the object hit is
+     * not tested when it {@linkplain #cannotShadow cannot shadow} such a ray, since its test could
+     * only answer no (a sphere's, from its own surface, took the exact residual every time).
+     */
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
         sr.scratch.shadowRays++;
+        GeometricObject self = cannotShadow(sr) ? sr.object : null;
         for (GeometricObject object : shadowCasters) {
-            if (object.shadowHit(ray, tMax, sr)) {
+            if (object != self && object.shadowHit(ray, tMax, sr)) {
                 return true;
             }
         }
         return false;
+    }
+
+    /**
+     * True when the object of {@code sr}'s hit cannot shadow a ray leaving it towards its lit side:
+     * it says so ({@link GeometricObject#cannotShadowItself}), it was hit in world space (an
+     * instance's object, placed elsewhere, could shadow its untransformed self) and, if it
+     * encloses a solid, on its front face: the turned normal is then the outward one, so the ray
+     * leaves the solid from outside.
+     */
+    private static boolean cannotShadow(ShadeRec sr) {
+        GeometricObject object = sr.object;
+        return object != null && !sr.isTransformed() && object.cannotShadowItself() && (!object.isClosed() || sr.frontFace);
     }
 
     public ViewPlane viewPlane() {

@@ -50,9 +50,17 @@ public final class AreaLight extends Light {
         return true;
     }
 
+    /**
+     * Both normals must see the emitter (the geometric one decides the side, as in the shading).
+     * They are the same vector unless the normal is interpolated or bumped; then one test answers
+     * for both, and a hit saves the second (a third of the shading's tests per light).
+     */
     @Override
     public boolean mayIlluminate(ShadeRec sr) {
-        return emitter.mayLight(sr.hitPoint, sr.normal) && emitter.mayLight(sr.hitPoint, sr.geometricNormal);
+        MutableVec3 n = sr.normal;
+        MutableVec3 g = sr.geometricNormal;
+        boolean same = n.x == g.x && n.y == g.y && n.z == g.z;
+        return emitter.mayLight(sr.hitPoint, n) && (same || emitter.mayLight(sr.hitPoint, g));
     }
 
     @Override

@@ -10,11 +10,16 @@ final class SquareCount {
         return k * k;
     }
 
-    /** The grid side k with k * k = roundUp(n). */
+    /**
+     * The grid side k with k * k = roundUp(n): the smallest k &gt;= 1 with k * k &gt;= n. Counted up
+     * rather than taken from a square root: shading asks this for every hit's light sample count,
+     * which is small (1 for one sample), and the count costs a few integer steps, not a square
+     * root and a rounding.
+     */
     static int side(int n) {
-        int k = (int) Math.ceil(Math.sqrt(Math.max(1, n)));
-        while ((k - 1) * (k - 1) >= n && k > 1) {
-            k--;
+        int k = 1;
+        while ((long) k * k < n) {
+            k++;
         }
         return k;
     }

@@ -1,6 +1,7 @@
 package raytracer.lights;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
@@ -269,5 +270,30 @@ class AreaLightTest {
         }
         assertEquals(16L * SIZE * SIZE, shadowRays[0]);
         assertEquals(4L * SIZE * SIZE, shadowRays[1]);
+    }
+
+    /** Whether a point with these shading and geometric normals sees a square light above it that emits downwards. */
+    private static boolean mayIlluminate(double[] normal, double[] geometric) {
+        World world = new World(new ViewPlane(1, 1, 1, new MultiJittered(), 0, 1),
+            new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
+        ShadeRec sr = new WorkerScratch(world).shadeRec(0);
+        sr.hitPoint.set(0, 0, 0);
+        sr.normal.set(normal[0], normal[1], normal[2]);
+        sr.geometricNormal.set(geometric[0], geometric[1], geometric[2]);
+        AreaLight light = AreaLight.rectangle(new Point3D(-1, 4, -1), new Vector3D(2, 0, 0), new Vector3D(0, 0, 2), 1,
+                                              RGBColor.WHITE, 1);
+        return light.mayIlluminate(sr);
+    }
+
+    @Test
+    void aLightMayIlluminateAPointOnlyWhenBothItsNormalsSeeIt() {
+        double[] up = {0, 1, 0};
+        double[] down = {0, -1, 0};
+        double[] tilted = {0.6, 0.8, 0};
+        assertTrue(mayIlluminate(up, up));
+        assertTrue(mayIlluminate(tilted, up));
+        assertFalse(mayIlluminate(down, down));
+        assertFalse(mayIlluminate(up, down), "a shading normal that sees the light does not answer for the geometric one");
+        assertFalse(mayIlluminate(down, up));
     }
 }
