@@ -3,6 +3,7 @@ package raytracer.render;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -10,6 +11,7 @@ import org.openjdk.jmh.annotations.Fork;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
@@ -20,11 +22,16 @@ import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneLoader;
+import raytracer.samplers.Samplers;
 
 /**
- * One pixel of the default scene per operation (16 samples, mirror recursion, two lights with
- * shadows), on one thread. With {@code -prof gc} it shows that the whole per-ray path, camera to
- * shading, allocates nothing.
+ * One pixel per operation (16 samples), on one thread. {@code scene=default}: the default scene
+ * (mirror recursion, two lights with shadows); {@code scene=arealight-spheres}: the simple-scene
+ * path of issue 13 (four objects, one area-light sample per pixel sample), where operations per
+ * millisecond times 16 is samples per millisecond. {@code sampler} overrides the scene's pattern
+ * ({@code -p sampler=sobol}). With {@code -prof gc} it shows that the whole per-ray path, camera to
+ * shading, allocates nothing. Run from the project folder (the area-light scene is read from
+ * {@code scenes/}).
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.Throughput)
@@ -33,6 +40,13 @@ import raytracer.io.scene.SceneLoader;
 @Measurement(iterations = 5, time = 2)
 @Fork(1)
 public class PixelBenchmark {
+    @Param({"default", "arealight-spheres"})
+    public String scene;
+
+    /** A sampler's name, or "scene" for the scene's own. */
+    @Param({"scene"})
+    public String sampler;
+
     private Workers workers;
     private Renderer renderer;
     private WorkerScratch scratch;
@@ -43,8 +57,12 @@ public class PixelBenchmark {
 
     @Setup
     public void setUp() throws Exception {
-        LoadedScene loaded = SceneLoader.load("default scene", defaultScene());
+        LoadedScene loaded = scene.equals("default") ? SceneLoader.load("default scene", defaultScene())
+                             : SceneLoader.load(Path.of("scenes", scene + ".yaml"));
         World world = loaded.world();
+        if (!sampler.equals("scene")) {
+            world.setViewPlane(world.viewPlane().withSampler(Samplers.byName(sampler)));
+        }
         world.prepare();
         workers = new Workers(1); // renderPixel runs on the benchmark's thread; the pool stays idle
         renderer = new Renderer(world, loaded.rayTree(), workers, 1);

@@ -49,6 +49,7 @@ public final class Matte extends Material {
         return textured;
     }
 
+    @Override
     public List<Skip> simplify(World world, boolean mayDropRays) {
         List<Skip> skips = new ArrayList<>();
         lighting = lighting.simplified(world, name(), skips);

@@ -2,6 +2,7 @@ package raytracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
@@ -82,7 +83,9 @@ class ConvergeCommandTest {
     void errorsAreMeasuredInTheUnitsOfThePfmOutput() throws IOException {
         // exposure scales the image and the exact image alike: the relative error does not change
         String text = Files.readString(Path.of("scenes", "closed-form-disk.yaml"));
-        Path bright = write("bright.yaml", text.replace("samples: 16}", "samples: 16, exposure: 3}"));
+        String brightText = text.replace("samples: 16}", "samples: 16, exposure: 3}");
+        assertNotEquals(text, brightText, "the scene's image line changed: the exposure was not added");
+        Path bright = write("bright.yaml", brightText);
         Path plain = write("plain.yaml", text);
         double[] relative = new double[2];
         double[] rmse = new double[2];
