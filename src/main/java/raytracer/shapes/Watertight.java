@@ -50,15 +50,19 @@ public final class Watertight {
         double u = cx * by - cy * bx;
         double w1 = ax * cy - ay * cx;
         double w2 = bx * ay - by * ax;
-        // outside when the edge functions have both signs (a zero counts as either)
-        if (Math.min(u, Math.min(w1, w2)) < 0 && Math.max(u, Math.max(w1, w2)) > 0) {
+        // outside when the edge functions have both signs (a zero counts as either); plain
+        // comparisons joined without short-circuits, since Math.min and Math.max on doubles cost a
+        // blend sequence each for NaN and -0.0 rules that this test does not need
+        boolean someNegative = u < 0 | w1 < 0 | w2 < 0;
+        boolean somePositive = u > 0 | w1 > 0 | w2 > 0;
+        if (someNegative & somePositive) {
             return Double.POSITIVE_INFINITY;
         }
         double sz = ray.sz();
         double det = u + w1 + w2;
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
         // 0 < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
-        if (!(Math.min(t, tMax - t) > 0)) {
+        if (!(t > 0 & tMax - t > 0)) {
             return Double.POSITIVE_INFINITY;
         }
         sr.b1 = w1 / det;

@@ -22,6 +22,11 @@ final class HitTesting {
         sr = new WorkerScratch(world).shadeRec(0);
     }
 
+    /** The hit record the tests fill, for tests of the intersection routines themselves. */
+    ShadeRec record() {
+        return sr;
+    }
+
     static Ray ray(double ox, double oy, double oz, double dx, double dy, double dz) {
         return new Ray().set(ox, oy, oz, dx, dy, dz);
     }
