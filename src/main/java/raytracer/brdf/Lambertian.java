@@ -13,24 +13,28 @@ import raytracer.math.MutableVec3;
  */
 public final class Lambertian implements BRDF {
     private final double kd;
+    /** kd / pi, divided once here rather than at every light sample (the same double). */
+    private final double kdOverPi;
     private final RGBColor cd;
     private final Texture texture;
 
     public Lambertian(double kd, RGBColor cd) {
         this.kd = kd;
+        this.kdOverPi = kd / Math.PI;
         this.cd = cd;
         this.texture = null;
     }
 
     public Lambertian(double kd, Texture texture) {
         this.kd = kd;
+        this.kdOverPi = kd / Math.PI;
         this.cd = null;
         this.texture = texture;
     }
 
     @Override
     public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
-        color(sr, out).scale(kd / Math.PI);
+        color(sr, out).scale(kdOverPi);
     }
 
     @Override

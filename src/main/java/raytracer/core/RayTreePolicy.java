@@ -110,6 +110,10 @@ public final class RayTreePolicy {
      * then need not trace the shadow ray that could only confirm it.
      */
     public boolean negligible(int depth, double r, double g, double b) {
-        return Math.max(r * weightR[depth], Math.max(g * weightG[depth], b * weightB[depth])) < radianceCutoff;
+        // max(r, g, b) < c, asked channel by channel: the same answer for every input (a NaN fails
+        // both forms), without Math.max's NaN and -0.0 handling, a long blend sequence on the path
+        // of every light sample; & rather than && keeps it free of branches
+        double c = radianceCutoff;
+        return r * weightR[depth] < c & g * weightG[depth] < c & b * weightB[depth] < c;
     }
 }

@@ -21,6 +21,9 @@ public final class WorkerScratch {
     private final MutableRgb[] colors;
     private final MutableRgb[] weights;
     public final Ray shadowRay = new Ray();
+    /** How many camera rays the renderer makes ahead of tracing them: a block of a pixel's samples. */
+    public static final int CAMERA_RAYS = 16;
+    private final Ray[] cameraRays = new Ray[CAMERA_RAYS];
     /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
     public final TraversalStack traversals = new TraversalStack();
     /** The watertight triangle test's constants for the ray whose triangles are being tested. */
@@ -73,6 +76,9 @@ public final class WorkerScratch {
             colors[i] = new MutableRgb();
             weights[i] = new MutableRgb();
         }
+        for (int i = 0; i < CAMERA_RAYS; i++) {
+            cameraRays[i] = new Ray();
+        }
         samples = new PixelSamples(levels);
         // a scratch used without a renderer (a test tracing one ray) draws pixel (0, 0), sample 0, seed 0
         samples.startPixel(new SampleTables(world.viewPlane().sampler(), world.viewPlane().numSamples(), 0), 0, 0);
@@ -118,6 +124,11 @@ public final class WorkerScratch {
             return new ShadeRec(world, this);
         }
         return shadeRecs[depth];
+    }
+
+    /** Camera ray slot {@code k}, 0 &lt;= k &lt; {@link #CAMERA_RAYS}, for rays made ahead of tracing. */
+    public Ray cameraRay(int k) {
+        return cameraRays[k];
     }
 
     /** The ray slot for rays traced at {@code depth} (a material fills slot depth + 1). */

@@ -43,7 +43,17 @@ final class RectangleEmitter implements Emitter {
         double h = n.x * cx + n.y * cy + n.z * cz;
         double ha = n.x * a.x() + n.y * a.y() + n.z * a.z();
         double hb = n.x * b.x() + n.y * b.y() + n.z * b.z();
-        return h + Math.max(ha, 0) + Math.max(hb, 0) > 0;
+        // h + max(ha, 0) + max(hb, 0) > 0, without Math.max's NaN and -0.0 rules (a long blend
+        // sequence); adding a zero could only change the sign of a zero sum, which fails "> 0"
+        // either way, and a NaN height still answers false
+        double top = h;
+        if (ha > 0) {
+            top += ha;
+        }
+        if (hb > 0) {
+            top += hb;
+        }
+        return top > 0 && ha == ha && hb == hb;
     }
 
     @Override

@@ -155,7 +155,11 @@ public final class Renderer {
     /**
      * Averages the samples of pixel (x, y) (Suffern, listing 4.2). Each sample's values, from its
      * position in the pixel to its last light sample, are functions of (seed, pixel, sample index,
-     * dimension) alone ({@link PixelSamples}).
+     * dimension) alone ({@link PixelSamples}), so the camera rays of up to
+     * {@link WorkerScratch#CAMERA_RAYS} samples are made before the first of them is traced: they
+     * depend on nothing traced, and made in one loop, one ray's table reads, square root and
+     * divisions overlap another's, where one sample at a time they headed its chain of dependent
+     * arithmetic and the processor waited on them.
      */
     void renderPixel(int x, int y, WorkerScratch s, Film film) {
         ViewPlane vp = world.viewPlane();
@@ -165,34 +169,40 @@ public final class Renderer {
         PixelSamples samples = s.samples;
         int n = vp.numSamples();
         samples.startPixel(tables(), x, y);
-        Ray ray = s.ray(0);
         MutableRgb sample = s.color(0);
         MutableVec3 disk = s.diskScratch;
         double r = 0;
         double g = 0;
         double b = 0;
-        for (int i = 0; i < n; i++) {
-            samples.startSample(i);
-            s.rng.reseed(samples.sampleKey(i));
-            samples.get2D(0, PixelSamples.PIXEL, 0, 1);
-            double px = x + samples.u;
-            double py = y + samples.v;
-            if (lens) {
-                // the concentric map keeps the pattern's strata (Suffern, section 10.4)
-                samples.get2D(0, PixelSamples.LENS, 0, 1);
-                SampleMapping.toUnitDisk(samples.u, samples.v, disk);
-                camera.generateRay(vp, px, py, disk.x, disk.y, ray);
-            } else {
-                camera.generateRay(vp, px, py, 0, 0, ray);
+        for (int first = 0; first < n; first += WorkerScratch.CAMERA_RAYS) {
+            int end = Math.min(n, first + WorkerScratch.CAMERA_RAYS);
+            for (int i = first; i < end; i++) {
+                samples.startSample(i);
+                samples.get2D(0, PixelSamples.PIXEL, 0, 1);
+                double px = x + samples.u;
+                double py = y + samples.v;
+                Ray ray = s.cameraRay(i - first);
+                if (lens) {
+                    // the concentric map keeps the pattern's strata (Suffern, section 10.4)
+                    samples.get2D(0, PixelSamples.LENS, 0, 1);
+                    SampleMapping.toUnitDisk(samples.u, samples.v, disk);
+                    camera.generateRay(vp, px, py, disk.x, disk.y, ray);
+                } else {
+                    camera.generateRay(vp, px, py, 0, 0, ray);
+                }
             }
-            s.primaryRays++;
-            tracer.traceRay(ray, 0, s, sample);
-            if (Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b)) {
-                r += sample.r;
-                g += sample.g;
-                b += sample.b;
-            } else {
-                s.nonFiniteSamples++; // counted and reported: a defect to fix, never a pixel to show
+            for (int i = first; i < end; i++) {
+                samples.startSample(i);
+                s.rng.reseed(samples.sampleKey(i));
+                s.primaryRays++;
+                tracer.traceRay(s.cameraRay(i - first), 0, s, sample);
+                if (Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b)) {
+                    r += sample.r;
+                    g += sample.g;
+                    b += sample.b;
+                } else {
+                    s.nonFiniteSamples++; // counted and reported: a defect to fix, never a pixel to show
+                }
             }
         }
         film.set(x, y, r / n, g / n, b / n);
