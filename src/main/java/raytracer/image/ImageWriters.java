@@ -1,6 +1,5 @@
 package raytracer.image;
 
-import java.awt.image.BufferedImage;
 import java.io.BufferedOutputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
@@ -11,7 +10,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
-import javax.imageio.ImageIO;
 
 /** Writes a {@link Film} as PNG (sRGB, 8 bit) or PFM (linear 32-bit float), chosen by extension. */
 public final class ImageWriters {
@@ -38,34 +36,19 @@ public final class ImageWriters {
     public static void write(Film film, double exposure, boolean srgb, Path path) throws IOException {
         String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.endsWith(".png")) {
-            BufferedImage image = toImage(film, exposure, srgb);
-            AtomicFile.write(path, out -> {
-                if (!ImageIO.write(image, "png", out)) {
-                    throw new IOException("no PNG encoder available");
+            DisplayCodes codes = new DisplayCodes(exposure, srgb);
+            AtomicFile.write(path, out -> PngEncoder.write(film.width(), film.height(), (y, rgb) -> {
+                for (int x = 0, i = 0; x < film.width(); x++) {
+                    for (int c = 0; c < 3; c++) {
+                        rgb[i++] = (byte) codes.code(film.get(x, y, c));
+                    }
                 }
-            });
+            }, new BufferedOutputStream(out)));
         } else if (name.endsWith(".pfm")) {
             AtomicFile.write(path, out -> writePfm(film, exposure, out));
         } else {
             throw new IOException("unsupported output format for " + path + " (use one of " + EXTENSIONS + ")");
         }
-    }
-
-    public static BufferedImage toImage(Film film, double exposure) {
-        return toImage(film, exposure, true);
-    }
-
-    public static BufferedImage toImage(Film film, double exposure, boolean srgb) {
-        BufferedImage image = new BufferedImage(film.width(), film.height(), BufferedImage.TYPE_INT_RGB);
-        for (int y = 0; y < film.height(); y++) {
-            for (int x = 0; x < film.width(); x++) {
-                int r = ToneMap.toByte(film.get(x, y, 0), exposure, srgb);
-                int g = ToneMap.toByte(film.get(x, y, 1), exposure, srgb);
-                int b = ToneMap.toByte(film.get(x, y, 2), exposure, srgb);
-                image.setRGB(x, y, r << 16 | g << 8 | b);
-            }
-        }
-        return image;
     }
 
     /**
