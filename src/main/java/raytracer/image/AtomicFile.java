@@ -40,7 +40,7 @@ public final class AtomicFile {
                             : e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
             throw new IOException("cannot write " + target + ": " + reason, e);
         } catch (IOException e) {
-            // the body's own failure, such as ImageIO's "I/O error writing PNG file!" around "File too large"
+            // the body's own failure, such as an encoder's message around the cause "File too large"
             String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
             Throwable cause = e.getCause();
             if (cause != null && cause.getMessage() != null && !reason.contains(cause.getMessage())) {
