@@ -43,14 +43,10 @@ public final class DisplayCodes {
         return k;
     }
 
-    /** Bisection over the positive doubles below 1, ordered as their bit patterns are. */
-    private static long bitsOf(double v) {
-        return Double.doubleToRawLongBits(v);
-    }
-
+    /** Bisection over the doubles in [0, 1], which order as their bit patterns do as longs. */
     private static double leastValueWithCode(int k, boolean srgb) {
-        long lo = bitsOf(0.0); // code 0
-        long hi = bitsOf(1.0); // code 255 >= k
+        long lo = Double.doubleToRawLongBits(0.0); // code 0
+        long hi = Double.doubleToRawLongBits(1.0); // code 255 >= k
         while (hi - lo > 1) {
             long mid = lo + (hi - lo) / 2;
             if (ToneMap.toByte(Double.longBitsToDouble(mid), 1, srgb) >= k) {

@@ -12,10 +12,11 @@ import java.util.zip.DeflaterOutputStream;
  * A PNG writer for 8-bit RGB images (the PNG specification, ISO/IEC 15948): the signature, an
  * IHDR chunk, the rows in IDAT chunks and IEND. Each row is stored with the Sub filter (a byte
  * minus the same channel of the pixel to its left), which turns a rendered image's smooth
- * gradients into small numbers that compress well, and deflated at the fastest level. ImageIO's
- * writer, which tries five filters on every row at a slower level, took about 0.25 s for a
- * 1920x1080 frame on a cold JVM, a sixth of the whole run of the dragon bench frame; this one
- * takes a fraction of that for files about as large (docs/performance.md, "Writing the image").
+ * gradients into small numbers that compress well, and deflated at the fastest level. With
+ * ImageIO's writer, which chooses among five filters on every row, writing the dragon bench frame
+ * (1920x1080) took 0.44-0.50 s on a cold JVM, a quarter of a warm-cache run; with this one and
+ * {@link DisplayCodes}, 0.14-0.16 s, for a file 10% larger (docs/performance.md, "Traversal speed
+ * and the whole run").
  */
 public final class PngEncoder {
     private static final byte[] SIGNATURE = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};

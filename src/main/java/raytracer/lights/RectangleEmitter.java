@@ -53,7 +53,7 @@ final class RectangleEmitter implements Emitter {
         if (hb > 0) {
             top += hb;
         }
-        return top > 0 && ha == ha && hb == hb;
+        return top > 0 && !Double.isNaN(ha) && !Double.isNaN(hb);
     }
 
     @Override

@@ -2,6 +2,7 @@ package raytracer.image;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
@@ -64,7 +65,7 @@ class PngEncoderTest {
         } while (!type.equals("IEND"));
         assertEquals(0, in.available(), "nothing after IEND");
         String order = types.toString().trim();
-        assertEquals(true, order.matches("IHDR( IDAT){2,} IEND"), order);
+        assertTrue(order.matches("IHDR( IDAT){2,} IEND"), order);
     }
 
     private static byte[] encode(int w, int h, byte[] codes) throws IOException {
