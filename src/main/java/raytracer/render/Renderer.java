@@ -107,14 +107,33 @@ public final class Renderer {
                                primary, secondary, shadow, nonFinite, boxTests, skipped);
     }
 
-    private static List<int[]> tiles(int width, int height) {
-        List<int[]> tiles = new ArrayList<>();
+    /**
+     * The tiles (x0, y0, x1, y1) of a width x height image in the order the workers take them: the
+     * row-major list permuted by bit reversal of the index (van der Corput), so that any run of
+     * successive tiles, and each half the split hands a worker, is spread over the whole image.
+     * Why: the JIT compiles the hot loops from what the first tiles did. Taken row by row, those
+     * were a strip of floor or sky, where a shadow ray never meets a triangle behind its origin;
+     * compiled without that branch, the triangle test was thrown away and recompiled once the rows
+     * reached the object, during the first render (docs/performance.md, "Tile order").
+     */
+    static List<int[]> tiles(int width, int height) {
+        List<int[]> rowMajor = new ArrayList<>();
         for (int y = 0; y < height; y += TILE_SIZE) {
             for (int x = 0; x < width; x += TILE_SIZE) {
-                tiles.add(new int[] {x, y, Math.min(x + TILE_SIZE, width), Math.min(y + TILE_SIZE, height)});
+                rowMajor.add(new int[] {x, y, Math.min(x + TILE_SIZE, width), Math.min(y + TILE_SIZE, height)});
             }
         }
-        return tiles;
+        int n = rowMajor.size();
+        int bits = 32 - Integer.numberOfLeadingZeros(n - 1);
+        List<int[]> spread = new ArrayList<>(n);
+        for (int i = 0; i < 1 << bits; i++) {
+            // bits is 0 for a single tile, and a shift by 32 would be no shift in Java
+            int j = bits == 0 ? 0 : Integer.reverse(i) >>> (32 - bits);
+            if (j < n) {
+                spread.add(rowMajor.get(j));
+            }
+        }
+        return spread;
     }
 
     /** Splits a range of tiles in halves; a single tile is rendered in place. */
