@@ -113,7 +113,7 @@ public class AllocationStudyBenchmark {
         void renderNext() {
             // a fixed pseudo-random walk, so that every part of the scene is measured
             next = (next + 7919) % pixels;
-            scene.renderer.renderPixel(next % width, next / width, scratch, film);
+            scene.renderer.renderPixel(next % width, next / width, scratch, film, null);
         }
     }
 

@@ -87,6 +87,6 @@ public class PixelBenchmark {
     public void pixel() {
         // walk the image in a fixed pseudo-random order so that all parts of the scene are measured
         next = (next + 7919) % (width * height);
-        renderer.renderPixel(next % width, next / width, scratch, film);
+        renderer.renderPixel(next % width, next / width, scratch, film, null);
     }
 }

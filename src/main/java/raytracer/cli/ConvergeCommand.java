@@ -18,6 +18,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
+import raytracer.core.PixelFilter;
 import raytracer.core.ViewPlane;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
@@ -93,6 +94,11 @@ final class ConvergeCommand implements Callable<Integer> {
 
     @Option(names = "--csv", paramLabel = "FILE", description = "Also write the table as comma-separated values.")
     Path csv;
+
+    @Option(names = "--filter", paramLabel = "NAME",
+            description = "How pixels are made from samples, for every curve and a self-rendered reference (overrides the "
+                          + "scene): box or gaussian.")
+    String filter;
 
     @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")
     Integer width;
@@ -190,6 +196,8 @@ final class ConvergeCommand implements Callable<Integer> {
         for (double t : budgets) {
             usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
         }
+        usageIf(filter != null && !PixelFilter.NAMES.contains(filter),
+                "unknown --filter '" + filter + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
         usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
         usageIf(threads < 1, "--threads must be at least 1, got " + threads);
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
@@ -232,6 +240,9 @@ final class ConvergeCommand implements Callable<Integer> {
         if (config.sampler() != null) {
             vp = vp.withSampler(Samplers.byName(config.sampler()));
         }
+        if (filter != null) {
+            vp = vp.withFilter(PixelFilter.named(filter));
+        }
         world.setViewPlane(vp.withResolution(width != null ? width : vp.hres(), height != null ? height : vp.vres()));
         RayTreeSettings rayTree = config.cutoff() != null ? loaded.rayTree().withCutoff(config.cutoff()) : loaded.rayTree();
         world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));
@@ -245,7 +256,13 @@ final class ConvergeCommand implements Callable<Integer> {
             note.println("converge: reference: " + reference);
             return new ConvergeReference.Image(film, Double.NaN, reference);
         }
-        if (!reference.equals("self")) {
+        if (!vp.filter().isBox()) {
+            // the exact images are averages over each pixel's square: a box-filtered image
+            if (reference.equals("closed-form")) {
+                throw new IOException("--reference closed-form: the exact image is of box-filtered pixels, and this run's filter is "
+                                      + vp.filter().name() + "; use --filter box, or --reference self");
+            }
+        } else if (!reference.equals("self")) {
             var exact = ConvergeReference.closedForm(scene, vp.hres(), vp.vres(), note, reference.equals("closed-form"));
             if (exact.isPresent()) {
                 return exact.get();

@@ -113,7 +113,8 @@ final class ConvergeReference {
         LoadedScene whole = new LoadedScene(world, loaded.rayTree().withCutoff(0), loaded.encoding(), loaded.report());
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
-                          + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n";
+                          + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
+                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter() + "\n");
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
         Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);

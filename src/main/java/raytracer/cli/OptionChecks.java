@@ -5,6 +5,7 @@ import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
+import raytracer.core.PixelFilter;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
@@ -51,7 +52,9 @@ final class OptionChecks {
         ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
         Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
-        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, o.maxDepth, pass, o.cutoff, encoding);
+        PixelFilter filter = o.filter == null ? null : usage(() -> PixelFilter.named(o.filter));
+        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
+                                                      encoding);
         if (o.noCache && o.cacheDir != null) {
             throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
         }

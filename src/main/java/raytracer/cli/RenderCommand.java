@@ -43,6 +43,11 @@ public final class RenderCommand implements Callable<Integer> {
                           + "hammersley or sobol.")
     String sampler;
 
+    @Option(names = "--filter", paramLabel = "NAME",
+            description = "How pixels are made from samples (overrides the scene): box (the book's: the average of the pixel's own "
+                          + "samples) or gaussian (standard deviation 0.5 pixel, radius 2: less noise, slightly softer).")
+    String filter;
+
     @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 

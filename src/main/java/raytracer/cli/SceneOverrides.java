@@ -1,5 +1,6 @@
 package raytracer.cli;
 
+import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
@@ -8,12 +9,12 @@ import raytracer.core.World;
 import raytracer.image.DisplayEncoding;
 
 /**
- * What the command line changes in the scene file's settings: image size, samples, sampler and
- * depth of the view plane, the term pass and the cutoff, the PNG encoding. A null field leaves the
+ * What the command line changes in the scene file's settings: image size, samples, sampler,
+ * filter and depth of the view plane, the term pass and the cutoff, the PNG encoding. A null field leaves the
  * scene's value.
  */
-record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sampler, Integer maxDepth, ShadingPass pass,
-                      Double cutoff, DisplayEncoding encoding) {
+record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sampler, PixelFilter filter, Integer maxDepth,
+                      ShadingPass pass, Double cutoff, DisplayEncoding encoding) {
 
     /** Gives {@code world} the view plane with the overridden size, samples, sampler and depth. */
     void applyTo(World world) {
@@ -29,6 +30,9 @@ record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sa
         }
         if (maxDepth != null) {
             vp = vp.withMaxDepth(maxDepth);
+        }
+        if (filter != null) {
+            vp = vp.withFilter(filter);
         }
         world.setViewPlane(vp);
     }

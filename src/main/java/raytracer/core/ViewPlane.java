@@ -2,9 +2,11 @@ package raytracer.core;
 
 /**
  * Image settings (Suffern, section 3.4): resolution, samples per pixel and their pattern, the
- * deepest recursion, and the exposure applied before display encoding.
+ * deepest recursion, the exposure applied before display encoding, and the filter that makes
+ * pixels from samples (the book's box unless a scene asks for another).
  */
-public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int maxDepth, double exposure) {
+public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int maxDepth, double exposure,
+                        PixelFilter filter) {
     /**
      * The deepest recursion allowed. Each level holds a hit record per worker (about 10 KB: 100000
      * levels ran out of memory) and three or four stack frames of the worker thread, whose default
@@ -25,23 +27,35 @@ public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int
         if (!(exposure > 0) || !Double.isFinite(exposure)) {
             throw new IllegalArgumentException("exposure must be a positive number, got " + exposure);
         }
+        if (filter == null) {
+            throw new IllegalArgumentException("a view plane needs a pixel filter");
+        }
         numSamples = sampler.supportedCount(numSamples);
     }
 
+    /** The book's view plane: each pixel the plain average of its own samples. */
+    public ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int maxDepth, double exposure) {
+        this(hres, vres, numSamples, sampler, maxDepth, exposure, PixelFilter.BOX);
+    }
+
     public ViewPlane withResolution(int h, int v) {
-        return new ViewPlane(h, v, numSamples, sampler, maxDepth, exposure);
+        return new ViewPlane(h, v, numSamples, sampler, maxDepth, exposure, filter);
     }
 
     public ViewPlane withSamples(int n) {
-        return new ViewPlane(hres, vres, n, sampler, maxDepth, exposure);
+        return new ViewPlane(hres, vres, n, sampler, maxDepth, exposure, filter);
     }
 
     /** The same settings with another sample pattern; the sample count is rounded for it anew. */
     public ViewPlane withSampler(Sampler s) {
-        return new ViewPlane(hres, vres, numSamples, s, maxDepth, exposure);
+        return new ViewPlane(hres, vres, numSamples, s, maxDepth, exposure, filter);
     }
 
     public ViewPlane withMaxDepth(int d) {
-        return new ViewPlane(hres, vres, numSamples, sampler, d, exposure);
+        return new ViewPlane(hres, vres, numSamples, sampler, d, exposure, filter);
+    }
+
+    public ViewPlane withFilter(PixelFilter f) {
+        return new ViewPlane(hres, vres, numSamples, sampler, maxDepth, exposure, f);
     }
 }

@@ -24,6 +24,9 @@ public final class WorkerScratch {
     /** How many camera rays the renderer makes ahead of tracing them: a block of a pixel's samples. */
     public static final int CAMERA_RAYS = 16;
     private final Ray[] cameraRays = new Ray[CAMERA_RAYS];
+    /** Where in its pixel each of those rays' samples lies, for a filter wider than the pixel. */
+    public final double[] pixelU = new double[CAMERA_RAYS];
+    public final double[] pixelV = new double[CAMERA_RAYS];
     /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
     public final TraversalStack traversals = new TraversalStack();
     /** The watertight triangle test's constants for the ray whose triangles are being tested. */

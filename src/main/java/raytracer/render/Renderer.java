@@ -7,6 +7,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
+import raytracer.core.PixelFilter;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.SampleTables;
@@ -84,8 +85,13 @@ public final class Renderer {
             scratches.add(s);
             return s;
         });
+        PixelFilter filter = vp.filter();
+        FilteredTile[] filtered = filter.isBox() ? null : new FilteredTile[tiles.size()];
         long start = System.nanoTime();
-        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch));
+        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered));
+        if (filtered != null) {
+            resolve(filtered, film);
+        }
         long wall = System.nanoTime() - start;
         long primary = 0;
         long secondary = 0;
@@ -136,6 +142,27 @@ public final class Renderer {
         return spread;
     }
 
+    /**
+     * Makes each pixel the weighted average of the samples that reached it: the tiles' sums added
+     * in the order of the tile list, then divided by the summed weight (which is positive, since a
+     * pixel's own samples lie within the filter's radius of its centre).
+     */
+    private static void resolve(FilteredTile[] filtered, Film film) {
+        int width = film.width();
+        int height = film.height();
+        double[] image = new double[4 * width * height];
+        for (FilteredTile tile : filtered) {
+            tile.addTo(image, width, height);
+        }
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int at = 4 * (y * width + x);
+                double w = image[at + 3];
+                film.set(x, y, image[at] / w, image[at + 1] / w, image[at + 2] / w);
+            }
+        }
+    }
+
     /** Splits a range of tiles in halves; a single tile is rendered in place. */
     private final class TileRange extends RecursiveAction {
         private static final long serialVersionUID = 1L;
@@ -144,27 +171,36 @@ public final class Renderer {
         private final int to;
         private final transient Film film;
         private final transient ThreadLocal<WorkerScratch> scratch;
+        /** Per tile, its filtered sums; null for the box filter, whose pixels go straight to the film. */
+        private final transient FilteredTile[] filtered;
 
-        TileRange(List<int[]> tiles, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch) {
+        TileRange(List<int[]> tiles, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch, FilteredTile[] filtered) {
             this.tiles = tiles;
             this.from = from;
             this.to = to;
             this.film = film;
             this.scratch = scratch;
+            this.filtered = filtered;
         }
 
         @Override
         protected void compute() {
             if (to - from > 1) {
                 int mid = (from + to) >>> 1;
-                invokeAll(new TileRange(tiles, from, mid, film, scratch), new TileRange(tiles, mid, to, film, scratch));
+                invokeAll(new TileRange(tiles, from, mid, film, scratch, filtered),
+                          new TileRange(tiles, mid, to, film, scratch, filtered));
                 return;
             }
             int[] tile = tiles.get(from);
             WorkerScratch s = scratch.get();
+            FilteredTile sums = null;
+            if (filtered != null) {
+                sums = new FilteredTile(world.viewPlane().filter(), tile[0], tile[1], tile[2], tile[3]);
+                filtered[from] = sums;
+            }
             for (int y = tile[1]; y < tile[3]; y++) {
                 for (int x = tile[0]; x < tile[2]; x++) {
-                    renderPixel(x, y, s, film);
+                    renderPixel(x, y, s, film, sums);
                 }
                 pixelsDone.addAndGet(tile[2] - tile[0]);
             }
@@ -178,9 +214,10 @@ public final class Renderer {
      * {@link WorkerScratch#CAMERA_RAYS} samples are made before the first of them is traced: they
      * depend on nothing traced, and made in one loop, one ray's table reads, square root and
      * divisions overlap another's, where one sample at a time they headed its chain of dependent
-     * arithmetic and the processor waited on them.
+     * arithmetic and the processor waited on them. Under the box filter the average goes to
+     * {@code film}; under a wider one each sample goes to {@code filtered}, the tile's sums.
      */
-    void renderPixel(int x, int y, WorkerScratch s, Film film) {
+    void renderPixel(int x, int y, WorkerScratch s, Film film, FilteredTile filtered) {
         ViewPlane vp = world.viewPlane();
         Camera camera = world.camera();
         Tracer tracer = world.tracer();
@@ -198,6 +235,8 @@ public final class Renderer {
             for (int i = first; i < end; i++) {
                 samples.startSample(i);
                 samples.get2D(0, PixelSamples.PIXEL, 0, 1);
+                s.pixelU[i - first] = samples.u;
+                s.pixelV[i - first] = samples.v;
                 double px = x + samples.u;
                 double py = y + samples.v;
                 Ray ray = s.cameraRay(i - first);
@@ -215,7 +254,15 @@ public final class Renderer {
                 s.rng.reseed(samples.sampleKey(i));
                 s.primaryRays++;
                 tracer.traceRay(s.cameraRay(i - first), 0, s, sample);
-                if (Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b)) {
+                boolean finite = Double.isFinite(sample.r) && Double.isFinite(sample.g) && Double.isFinite(sample.b);
+                if (filtered != null) {
+                    if (finite) {
+                        filtered.add(x, y, s.pixelU[i - first], s.pixelV[i - first], sample.r, sample.g, sample.b);
+                    } else {
+                        filtered.addBlack(x, y, s.pixelU[i - first], s.pixelV[i - first]);
+                        s.nonFiniteSamples++;
+                    }
+                } else if (finite) {
                     r += sample.r;
                     g += sample.g;
                     b += sample.b;
@@ -224,6 +271,8 @@ public final class Renderer {
                 }
             }
         }
-        film.set(x, y, r / n, g / n, b / n);
+        if (filtered == null) {
+            film.set(x, y, r / n, g / n, b / n);
+        }
     }
 }

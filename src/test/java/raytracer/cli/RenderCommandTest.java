@@ -320,6 +320,34 @@ class RenderCommandTest {
     }
 
     @Test
+    void theFilterOptionReplacesTheScenesBoxWithTheGaussian() throws IOException {
+        // a disk of radiance 1 (ambient only) on black, seen from above: the Gaussian spreads its
+        // edge into the pixels around it, the box does not
+        Path s = scene("filter.yaml", "image: {width: 24, height: 24, samples: 4, sampler: jittered}\n"
+            + "tracer: ray-cast\nbackground: [0, 0, 0]\nambient: {radiance: 1}\n"
+            + "camera: {type: orthographic, eye: [0, 5, 0], look-at: [0, 0, 0], up: [0, 0, -1], view-height: 24}\n"
+            + "materials:\n  glow: {type: matte, ka: 1, kd: 0, color: [1, 1, 1]}\n"
+            + "objects:\n  - {type: sphere, center: [0, 0, 0], radius: 6.2, material: glow}\n");
+        Result box = run(s.toString(), "-o", dir.resolve("box.pfm").toString(), "--seed", "3");
+        Result gaussian = run(s.toString(), "-o", dir.resolve("gaussian.pfm").toString(), "--filter", "gaussian", "--seed", "3");
+        assertEquals(0, box.code(), box.err());
+        assertEquals(0, gaussian.code(), gaussian.err());
+        Film b = ImageWriters.readPfm(dir.resolve("box.pfm"));
+        Film g = ImageWriters.readPfm(dir.resolve("gaussian.pfm"));
+        // along the middle row: the last lit pixel, then the first black one under the box
+        int x = 12;
+        while (b.get(x, 12, 0) > 0) {
+            x++;
+        }
+        assertTrue(x > 15 && x < 20, "the disk's edge, radius 6.2 pixels from the centre: " + x);
+        assertEquals(0, b.get(x, 12, 0), "box: outside the disk");
+        assertTrue(g.get(x, 12, 0) > 0.005 && g.get(x, 12, 0) < 0.5, "Gaussian: light spills over the edge: " + g.get(x, 12, 0));
+        assertEquals(0, g.get(x + 3, 12, 0), 1e-6, "Gaussian: nothing beyond its radius of 2 pixels");
+        assertEquals(1, b.get(12, 12, 0), 1e-6, "box: the centre");
+        assertEquals(1, g.get(12, 12, 0), 1e-6, "Gaussian: the centre, every sample around it lit");
+    }
+
+    @Test
     void outOfRangeOptions() {
         String out = dir.resolve("a.png").toString();
         // every bad option value is a usage error: exit code 2 and a pointer to --help
@@ -327,6 +355,7 @@ class RenderCommandTest {
             {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"}, {"--max-depth", "100000"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
             {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--sampler", "poisson-disk"}, {"--frobnicate", "1"},
+            {"--filter", "mitchell"},
         };
         for (String[] c : cases) {
             Result r = run("-o", out, c[0], c[1]);

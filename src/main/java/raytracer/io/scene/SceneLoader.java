@@ -25,6 +25,7 @@ import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.RayTreeSettings;
+import raytracer.core.PixelFilter;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -46,7 +47,8 @@ public final class SceneLoader {
     static final Set<String> SECTIONS =
         Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     static final double AMBIENT_RADIANCE = 0.1;
-    static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding");
+    static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding",
+                                                "filter", "filter-stddev");
 
     /**
      * The most characters (Unicode code points) a scene file may hold. SnakeYAML's default, 3 MiB,
@@ -199,7 +201,27 @@ public final class SceneLoader {
         }
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
                              image.integer("samples", 4, 1), Samplers.byName(samplerName),
-                             image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true));
+                             image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true),
+                             readFilter(source, image));
+    }
+
+    private static PixelFilter readFilter(Source source, YamlObject image) throws SceneException {
+        String name = image.string("filter", "box");
+        if (!PixelFilter.NAMES.contains(name)) {
+            throw source.error(image.raw("filter"), "unknown filter '" + name + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
+        }
+        if (!image.has("filter-stddev")) {
+            return PixelFilter.named(name);
+        }
+        if (!name.equals("gaussian")) {
+            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image is for filter: gaussian, not " + name);
+        }
+        double stddev = image.number("filter-stddev", PixelFilter.DEFAULT_STDDEV);
+        if (!(stddev >= PixelFilter.MIN_STDDEV && stddev <= PixelFilter.MAX_STDDEV)) {
+            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image must be " + PixelFilter.MIN_STDDEV + " to "
+                               + PixelFilter.MAX_STDDEV + " pixels, got " + stddev);
+        }
+        return PixelFilter.gaussian(stddev);
     }
 
     /**

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import raytracer.brdf.FittedPreset;
+import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.WorkerScratch;
@@ -88,6 +89,19 @@ class SceneLoaderTest {
         assertTrue(world.objects().get(2) instanceof Instance);
         world.prepare();
         assertEquals(1, world.lights().length);
+    }
+
+    @Test
+    void theImageMayAskForTheGaussianFilter() throws SceneException {
+        assertEquals(PixelFilter.BOX, SceneLoader.load("s.yaml", BASE).world().viewPlane().filter(), "the book's box by default");
+        PixelFilter standard = SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, "))
+            .world().viewPlane().filter();
+        assertEquals("gaussian", standard.name());
+        assertEquals(0.5, standard.stddev());
+        PixelFilter wide = SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, filter-stddev: 1, "))
+            .world().viewPlane().filter();
+        assertEquals(1, wide.stddev());
+        assertEquals(4, wide.radius());
     }
 
     @Test
@@ -166,7 +180,12 @@ class SceneLoaderTest {
                       "'max-depth' in image must be at most 1000, got 100000");
         assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
         assertMessage(error(BASE.replace("sampler: jittered", "sampler: poisson-disk")), "s.yaml:1:", "poisson-disk", "multi-jittered");
-        assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, height");
+        assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, filter, filter-stddev, height");
+        assertMessage(error(BASE.replace("image: {", "image: {filter: mitchell, ")), "s.yaml:1:", "'mitchell'", "allowed: box, gaussian");
+        assertMessage(error(BASE.replace("image: {", "image: {filter-stddev: 1, ")), "s.yaml:1:", "'filter-stddev'",
+                      "for filter: gaussian, not box");
+        assertMessage(error(BASE.replace("image: {", "image: {filter: gaussian, filter-stddev: 3, ")), "s.yaml:1:",
+                      "'filter-stddev' in image must be 0.2 to 2.0 pixels, got 3.0");
         assertMessage(error(BASE.replace("image: {", "image: {encoding: gamma, ")), "s.yaml:1:", "gamma", "linear, srgb");
         assertMessage(error(BASE.replace("image: {", "image: {cutoff: -0.1, ")), "s.yaml:1:", "'cutoff'", "at least 0");
         assertMessage(error(BASE.replace("image: {", "image: {cutoff: 1, ")), "s.yaml:1:", "'cutoff'", "below 1");

@@ -1,0 +1,100 @@
+package raytracer.render;
+
+import raytracer.core.PixelFilter;
+
+/**
+ * The weighted sums that the samples of one tile leave, under a filter wider than a pixel, in the
+ * tile's pixels and in a margin of {@link PixelFilter#reach} pixels around it (which belong to the
+ * neighbouring tiles). Per pixel: the sums of w r, w g, w b and of w. A pixel's value is the sum
+ * over every tile that reached it divided by the summed weight, added up after the render in the
+ * order of the tile list, so the floating-point sums, and the image, do not depend on which thread
+ * rendered which tile or when it finished.
+ */
+final class FilteredTile {
+    private final PixelFilter filter;
+    private final int reach;
+    /** The pixel at the margin's top-left corner, and the rows' width and count with the margin. */
+    private final int left;
+    private final int top;
+    private final int columns;
+    private final int rows;
+    private final double[] sums;
+    /** The weights of the current sample per column and row offset -reach .. reach. */
+    private final double[] wx;
+    private final double[] wy;
+
+    /** For the tile of pixels x0 .. x1 - 1, y0 .. y1 - 1. */
+    FilteredTile(PixelFilter filter, int x0, int y0, int x1, int y1) {
+        this.filter = filter;
+        this.reach = filter.reach();
+        this.left = x0 - reach;
+        this.top = y0 - reach;
+        this.columns = x1 - x0 + 2 * reach;
+        this.rows = y1 - y0 + 2 * reach;
+        this.sums = new double[4 * columns * rows];
+        this.wx = new double[2 * reach + 1];
+        this.wy = new double[2 * reach + 1];
+    }
+
+    /**
+     * Adds a sample of radiance (r, g, b) taken at (x + fx, y + fy) in pixel (x, y) of this tile,
+     * 0 &lt;= fx, fy &lt; 1, to every pixel whose centre lies within the filter's radius of it.
+     */
+    void add(int x, int y, double fx, double fy, double r, double g, double b) {
+        // the pixel k columns over has its centre at x + k + 0.5, |k + 0.5 - fx| from the sample
+        for (int k = -reach; k <= reach; k++) {
+            wx[k + reach] = filter.weight(k + 0.5 - fx);
+            wy[k + reach] = filter.weight(k + 0.5 - fy);
+        }
+        // the columns of nonzero weight: one end tap or the other lies beyond the radius
+        int first = wx[0] == 0 ? 1 : 0;
+        int last = wx[2 * reach] == 0 ? 2 * reach - 1 : 2 * reach;
+        int corner = (y - top - reach) * columns + (x - left - reach);
+        for (int j = 0; j <= 2 * reach; j++) {
+            double wj = wy[j];
+            if (wj == 0) {
+                continue;
+            }
+            int at = 4 * (corner + j * columns + first);
+            for (int i = first; i <= last; i++, at += 4) {
+                double w = wj * wx[i];
+                sums[at] += w * r;
+                sums[at + 1] += w * g;
+                sums[at + 2] += w * b;
+                sums[at + 3] += w;
+            }
+        }
+    }
+
+    /**
+     * Adds a sample that is left out (not finite) as black: its weight counts, as the box filter
+     * divides by all the samples of a pixel.
+     */
+    void addBlack(int x, int y, double fx, double fy) {
+        add(x, y, fx, fy, 0, 0, 0);
+    }
+
+    /**
+     * Adds these sums into {@code image} (four per pixel, rows of {@code width}), leaving out the
+     * margin beyond the image's edges.
+     */
+    void addTo(double[] image, int width, int height) {
+        for (int j = 0; j < rows; j++) {
+            int y = top + j;
+            if (y < 0 || y >= height) {
+                continue;
+            }
+            for (int i = 0; i < columns; i++) {
+                int x = left + i;
+                if (x < 0 || x >= width) {
+                    continue;
+                }
+                int from = 4 * (j * columns + i);
+                int to = 4 * (y * width + x);
+                for (int c = 0; c < 4; c++) {
+                    image[to + c] += sums[from + c];
+                }
+            }
+        }
+    }
+}
