@@ -172,6 +172,11 @@ class ConvergeCommandTest {
         assertOneLine(converge(scene.toString(), "--time", "-1"), 2, "--time values must be positive seconds");
         assertOneLine(converge(scene.toString(), "--config", "sampler=poisson-disk"), 2, "unknown sampler 'poisson-disk'; allowed: regular");
         assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");
+        assertOneLine(converge(scene.toString(), "--filter", "mitchell"), 2, "unknown --filter 'mitchell'; allowed: box, gaussian");
+        // the exact images are box-filtered: the Gaussian cannot be measured against them
+        assertOneLine(converge(Path.of("scenes", "closed-form-rectangle.yaml").toString(), "--filter", "gaussian", "--reference",
+                               "closed-form", "-W", "8", "-H", "8", "--plot", dir.resolve("g.png").toString()),
+                      1, "the exact image is of box-filtered pixels, and this run's filter is gaussian");
         assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 1, "give a name ending in .png");
         assertOneLine(converge(dir.resolve("missing.yaml").toString()), 1, "no such file");
         assertOneLine(converge(), 2, "Missing required parameter: 'SCENE'");
