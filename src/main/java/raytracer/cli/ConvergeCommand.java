@@ -69,7 +69,7 @@ final class ConvergeCommand implements Callable<Integer> {
 
     @Option(names = "--config", paramLabel = "KEY=VALUE[,...]",
             description = "A configuration (repeat for more): sampler=NAME (" + "regular, random, jittered, n-rooks, multi-jittered, "
-                          + "hammersley, sobol), light-samples=N per area light, cutoff=C, label=TEXT; a/b in a value makes one "
+                          + "correlated-multi-jittered, hammersley, sobol), light-samples=N per area light, cutoff=C, label=TEXT; a/b in a value makes one "
                           + "configuration per alternative. Default: the scene's own settings.")
     List<String> configs = new ArrayList<>();
 

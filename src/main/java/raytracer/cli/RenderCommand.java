@@ -40,7 +40,7 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--sampler", paramLabel = "NAME",
             description = "Sample pattern (overrides the scene): " + "regular, random, jittered, n-rooks, multi-jittered, "
-                          + "hammersley or sobol.")
+                          + "correlated-multi-jittered, hammersley or sobol.")
     String sampler;
 
     @Option(names = "--filter", paramLabel = "NAME",

@@ -5,7 +5,8 @@ import raytracer.core.Sampler;
 
 /** Sampler patterns by the names scene files and options use. */
 public final class Samplers {
-    private static final List<String> NAMES = List.of("regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley", "sobol");
+    private static final List<String> NAMES = List.of("regular", "random", "jittered", "n-rooks", "multi-jittered",
+                                                       "correlated-multi-jittered", "hammersley", "sobol");
 
     private Samplers() {
     }
@@ -31,6 +32,7 @@ public final class Samplers {
             case "jittered" -> new Jittered();
             case "n-rooks" -> new NRooks();
             case "multi-jittered" -> new MultiJittered();
+            case "correlated-multi-jittered" -> new CorrelatedMultiJittered();
             case "hammersley" -> new Hammersley();
             case "sobol" -> new Sobol();
             default -> throw new IllegalArgumentException(

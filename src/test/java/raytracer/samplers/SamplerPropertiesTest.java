@@ -33,7 +33,7 @@ class SamplerPropertiesTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"jittered", "multi-jittered", "regular"})
+    @ValueSource(strings = {"jittered", "multi-jittered", "correlated-multi-jittered", "regular"})
     void oneSamplePerStratum(String name) {
         Sampler s = Samplers.byName(name);
         for (int k : new int[] {1, 2, 4, 8}) {
@@ -46,7 +46,7 @@ class SamplerPropertiesTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"n-rooks", "multi-jittered"})
+    @ValueSource(strings = {"n-rooks", "multi-jittered", "correlated-multi-jittered"})
     void oneSamplePerRowAndColumnOfTheFineGrid(String name) {
         Sampler s = Samplers.byName(name);
         for (int n : new int[] {1, 4, 9, 16, 64}) {
@@ -79,7 +79,8 @@ class SamplerPropertiesTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"regular", "random", "jittered", "n-rooks", "multi-jittered", "hammersley", "sobol"})
+    @ValueSource(strings = {"regular", "random", "jittered", "n-rooks", "multi-jittered", "correlated-multi-jittered", "hammersley",
+                            "sobol"})
     void pointsStayInTheUnitSquare(String name) {
         Sampler s = Samplers.byName(name);
         for (int n : new int[] {1, 2, 9, 64, 100}) {
@@ -140,6 +141,8 @@ class SamplerPropertiesTest {
             String xy = axis == 0 ? " x" : " y";
             assertUniform(offsetsInStrata(new Jittered(), 16, 4, axis), "jittered in its 4 x 4 cells" + xy);
             assertUniform(offsetsInStrata(new MultiJittered(), 16, 16, axis), "multi-jittered in its 16 sub-columns" + xy);
+            assertUniform(offsetsInStrata(new CorrelatedMultiJittered(), 16, 16, axis),
+                          "correlated multi-jittered in its 16 sub-columns" + xy);
             assertUniform(offsetsInStrata(new NRooks(), 16, 16, axis), "n-rooks in its 16 columns" + xy);
             assertUniform(offsetsInStrata(new PureRandom(), 16, 1, axis), "random" + xy);
         }
@@ -177,10 +180,58 @@ class SamplerPropertiesTest {
         }
         assertUniform(column, "n-rooks: column of row 0");
         assertUniform(subColumn, "multi-jittered: sub-column in cell (0, 0)");
+        int[] correlated = new int[4];
+        for (long seed = 0; seed < 4000; seed++) {
+            double[][] cmj = draw(new CorrelatedMultiJittered(), 16, seed);
+            for (int i = 0; i < 16; i++) {
+                if ((int) (cmj[0][i] * 4) == 0 && (int) (cmj[1][i] * 4) == 0) {
+                    correlated[(int) (cmj[0][i] * 16)]++;
+                }
+            }
+        }
+        assertUniform(correlated, "correlated multi-jittered: sub-column in cell (0, 0)");
+    }
+
+    @Test
+    void correlatedMultiJitteredSharesOneShuffleAmongTheCellColumns() {
+        // the sub-column of the point in cell row j is sigma(j) in every cell column (and the
+        // sub-row of the point in cell column i is tau(i) in every cell row): Kensler's correlation.
+        // Chiu et al.'s multi-jittered shuffles each cell column on its own, so it differs somewhere.
+        int k = 5;
+        boolean independentDiffer = false;
+        for (long seed = 0; seed < 50; seed++) {
+            double[][] cmj = draw(new CorrelatedMultiJittered(), k * k, seed);
+            int[][] sub = subStrata(cmj, k);
+            for (int j = 0; j < k; j++) {
+                for (int i = 1; i < k; i++) {
+                    assertEquals(sub[0][j * k], sub[0][j * k + i], "seed " + seed + ": sub-column of row " + j + ", column " + i);
+                    assertEquals(sub[1][i], sub[1][j * k + i], "seed " + seed + ": sub-row of column " + i + ", row " + j);
+                }
+            }
+            int[][] mj = subStrata(draw(new MultiJittered(), k * k, seed), k);
+            for (int j = 0; j < k; j++) {
+                for (int i = 1; i < k; i++) {
+                    independentDiffer |= mj[0][j * k] != mj[0][j * k + i];
+                }
+            }
+        }
+        assertTrue(independentDiffer, "the test tells the two apart");
+    }
+
+    /** Per cell (row j, column i at j k + i): the point's sub-column and sub-row within its cell. */
+    private static int[][] subStrata(double[][] p, int k) {
+        int[][] sub = new int[2][k * k];
+        for (int q = 0; q < k * k; q++) {
+            int column = (int) (p[0][q] * k);
+            int row = (int) (p[1][q] * k);
+            sub[0][row * k + column] = (int) (p[0][q] * k * k) - column * k;
+            sub[1][row * k + column] = (int) (p[1][q] * k * k) - row * k;
+        }
+        return sub;
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"random", "jittered", "n-rooks", "multi-jittered", "sobol"})
+    @ValueSource(strings = {"random", "jittered", "n-rooks", "multi-jittered", "correlated-multi-jittered", "sobol"})
     void sameSeedSamePointsOtherSeedOtherPoints(String name) {
         Sampler s = Samplers.byName(name);
         int n = s.supportedCount(16);
