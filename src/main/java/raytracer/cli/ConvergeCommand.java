@@ -262,6 +262,10 @@ final class ConvergeCommand implements Callable<Integer> {
                 throw new IOException("--reference closed-form: the exact image is of box-filtered pixels, and this run's filter is "
                                       + vp.filter().name() + "; use --filter box, or --reference self");
             }
+            if (reference.equals("auto") && ConvergeReference.hasClosedForm(scene)) {
+                note.println("converge: reference: the exact image is of box-filtered pixels, not " + vp.filter().name()
+                             + "; rendering one instead");
+            }
         } else if (!reference.equals("self")) {
             var exact = ConvergeReference.closedForm(scene, vp.hres(), vp.vres(), note, reference.equals("closed-form"));
             if (exact.isPresent()) {

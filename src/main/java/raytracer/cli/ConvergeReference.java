@@ -58,6 +58,16 @@ final class ConvergeReference {
      * The scene's exact image, its quadrature error noted on {@code note}; empty when the scene has
      * none, unless {@code required}, when the reader's reason is the exception.
      */
+    /** True when the scene's image has a closed form. */
+    static boolean hasClosedForm(Path scene) {
+        try {
+            ClosedFormReader.read(scene);
+            return true;
+        } catch (SceneException e) {
+            return false;
+        }
+    }
+
     static Optional<Image> closedForm(Path scene, int width, int height, PrintWriter note, boolean required)
             throws SceneException {
         LitPlane exact;
@@ -114,7 +124,7 @@ final class ConvergeReference {
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
-                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter() + "\n");
+                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-stddev=" + vp.filter().stddev() + "\n");
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
         Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);

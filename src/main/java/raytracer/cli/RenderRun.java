@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import raytracer.accel.Aggregation;
+import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -69,6 +70,8 @@ final class RenderRun {
             }
             if (request.costView()) {
                 world.setTracer(BvhCost::new);
+                // counts per pixel, not averages blurred over the neighbours
+                world.setViewPlane(world.viewPlane().withFilter(PixelFilter.BOX));
             }
             Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
             RenderStats stats = render(new Renderer(world, rayTree, workers, request.seed()), film);

@@ -31,7 +31,8 @@ record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sa
         if (maxDepth != null) {
             vp = vp.withMaxDepth(maxDepth);
         }
-        if (filter != null) {
+        if (filter != null && !filter.name().equals(vp.filter().name())) {
+            // the same filter as the scene's keeps the scene's width (filter-stddev)
             vp = vp.withFilter(filter);
         }
         world.setViewPlane(vp);

@@ -8,9 +8,10 @@ import raytracer.math.Rng;
  * technical memo 13-01, 2013): multi-jittered points, n = k * k, one in each cell of the k x k grid
  * and one in each row and column of the n x n subgrid, where {@link MultiJittered} shuffles the
  * subcolumns of each cell column on its own, here one shuffle serves every cell column, and one
- * every cell row. Neighbouring cells then never put their points in the same corner, so the points
- * clump less: in a pixel with an edge the error is lower than with independent shuffles (Kensler's
- * figures; docs/converge.md, "Correlated multi-jittered", for this renderer's).
+ * every cell row. The points of a row of cells then sit at the same offset within their cells, one
+ * cell apart, and likewise down a column, so they clump less: where an edge crosses the pixel the
+ * error is lower (Kensler's figures), while a smooth integrand that varies in x and y together is
+ * averaged worse (docs/converge.md, "Correlated multi-jittered", for this renderer's figures).
  */
 public final class CorrelatedMultiJittered implements Sampler {
 

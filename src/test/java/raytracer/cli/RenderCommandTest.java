@@ -167,6 +167,12 @@ class RenderCommandTest {
         int corner = image.getRGB(1, 1) & 0xff;
         assertTrue(centre > corner + 50, "centre " + centre + " should be brighter than corner " + corner);
         assertTrue(r.err().contains("bounding-volume tests (BVH node boxes examined) per ray") && r.err().contains("peak heap"), r.err());
+        // the counts are per pixel: a Gaussian filter, from the option or the scene, does not blur them
+        Path gaussian = dir.resolve("cost-gaussian.png");
+        Result g = run(s.toString(), "-o", gaussian.toString(), "--view", "bvh-cost", "--filter", "gaussian");
+        assertEquals(0, g.code(), g.err());
+        assertTrue(g.err().contains("bvh-cost: " + min + " to " + max + " bounding-volume tests"), g.err());
+        assertArrayEquals(Files.readAllBytes(out), Files.readAllBytes(gaussian));
     }
 
     @Test
