@@ -20,9 +20,15 @@ public final class PixelFilter {
     public static final double DEFAULT_STDDEV = 0.5;
     /** The narrowest Gaussian: its radius, 4 sigma, must reach past a pixel's own half width. */
     public static final double MIN_STDDEV = 0.2;
-    /** The widest: a sample then reaches 8 pixels each way, 289 pixels in all. */
+    /**
+     * The widest: a sample then reaches 8 pixels each way, 289 pixels in all, still less than a
+     * tile's size, so a pixel lies in the margins of at most four tiles (Renderer.resolve).
+     */
     public static final double MAX_STDDEV = 2;
-    /** Entries of the weight table: the weight is read from it, since exp per tap cost more than the sample. */
+    /**
+     * Entries of the weight table: a weight costs a table read and a multiply-add instead of two
+     * calls of exp, ten times per sample.
+     */
     private static final int TABLE_SIZE = 1024;
 
     private final String name;
@@ -40,8 +46,10 @@ public final class PixelFilter {
         this.scale = TABLE_SIZE / radius;
         this.table = new double[TABLE_SIZE + 1];
         for (int i = 0; i < TABLE_SIZE; i++) {
-            table[i] = stddev > 0 ? exactWeight(i * radius / TABLE_SIZE) : 1;
+            table[i] = exactWeight(i * radius / TABLE_SIZE);
         }
+        // the Gaussian falls to 0 at the radius; the box stays 1 up to it
+        table[TABLE_SIZE] = isBox() ? 1 : 0;
     }
 
     /** The Gaussian of standard deviation {@code stddev} pixels, cut off at 4 stddev. */
@@ -102,7 +110,7 @@ public final class PixelFilter {
     /** The weight as the formula gives it, for the table and for tests. */
     public double exactWeight(double d) {
         if (isBox()) {
-            return Math.abs(d) <= radius ? 1 : 0;
+            return Math.abs(d) < radius ? 1 : 0;
         }
         double alpha = -1 / (2 * stddev * stddev);
         return Math.max(0, Math.exp(alpha * d * d) - Math.exp(alpha * radius * radius));

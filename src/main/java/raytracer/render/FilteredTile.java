@@ -46,7 +46,7 @@ final class FilteredTile {
             wx[k + reach] = filter.weight(k + 0.5 - fx);
             wy[k + reach] = filter.weight(k + 0.5 - fy);
         }
-        // the columns of nonzero weight: one end tap or the other lies beyond the radius
+        // an end column may lie beyond the radius (at sigma 0.5 one always does): leave it out
         int first = wx[0] == 0 ? 1 : 0;
         int last = wx[2 * reach] == 0 ? 2 * reach - 1 : 2 * reach;
         int corner = (y - top - reach) * columns + (x - left - reach);
@@ -74,27 +74,23 @@ final class FilteredTile {
         add(x, y, fx, fy, 0, 0, 0);
     }
 
+    /** The tile's first pixel column and row, without the margin. */
+    int x0() {
+        return left + reach;
+    }
+
+    int y0() {
+        return top + reach;
+    }
+
     /**
-     * Adds these sums into {@code image} (four per pixel, rows of {@code width}), leaving out the
-     * margin beyond the image's edges.
+     * Adds this tile's four sums for pixel (x, y), which must lie in the tile or its margin, to
+     * {@code acc[0 .. 4)}.
      */
-    void addTo(double[] image, int width, int height) {
-        for (int j = 0; j < rows; j++) {
-            int y = top + j;
-            if (y < 0 || y >= height) {
-                continue;
-            }
-            for (int i = 0; i < columns; i++) {
-                int x = left + i;
-                if (x < 0 || x >= width) {
-                    continue;
-                }
-                int from = 4 * (j * columns + i);
-                int to = 4 * (y * width + x);
-                for (int c = 0; c < 4; c++) {
-                    image[to + c] += sums[from + c];
-                }
-            }
+    void addSums(int x, int y, double[] acc) {
+        int at = 4 * ((y - top) * columns + (x - left));
+        for (int c = 0; c < 4; c++) {
+            acc[c] += sums[at + c];
         }
     }
 }

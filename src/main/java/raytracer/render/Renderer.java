@@ -90,7 +90,7 @@ public final class Renderer {
         long start = System.nanoTime();
         workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered));
         if (filtered != null) {
-            resolve(filtered, film);
+            resolve(filtered, film, filter.reach());
         }
         long wall = System.nanoTime() - start;
         long primary = 0;
@@ -143,22 +143,51 @@ public final class Renderer {
     }
 
     /**
-     * Makes each pixel the weighted average of the samples that reached it: the tiles' sums added
-     * in the order of the tile list, then divided by the summed weight (which is positive, since a
-     * pixel's own samples lie within the filter's radius of its centre).
+     * Makes each pixel the weighted average of the samples that reached it: the sums of the tiles
+     * whose margins hold it (its own and at most three neighbours, since the reach is below a
+     * tile's size), added in the order of the tile list, then divided by the summed weight (which
+     * is positive, since a pixel's own samples lie within the filter's radius of its centre). Pixel
+     * by pixel, so no image of sums is held beside the tiles'.
      */
-    private static void resolve(FilteredTile[] filtered, Film film) {
+    private static void resolve(FilteredTile[] filtered, Film film, int reach) {
         int width = film.width();
         int height = film.height();
-        double[] image = new double[4 * width * height];
-        for (FilteredTile tile : filtered) {
-            tile.addTo(image, width, height);
+        int columns = (width + TILE_SIZE - 1) / TILE_SIZE;
+        int rows = (height + TILE_SIZE - 1) / TILE_SIZE;
+        // each tile's place in the list, by its place in the grid of tiles
+        int[] listIndex = new int[columns * rows];
+        for (int i = 0; i < filtered.length; i++) {
+            listIndex[filtered[i].y0() / TILE_SIZE * columns + filtered[i].x0() / TILE_SIZE] = i;
         }
+        int[] near = new int[4];
+        double[] acc = new double[4];
         for (int y = 0; y < height; y++) {
+            int row0 = Math.max(0, y - reach) / TILE_SIZE;
+            int row1 = Math.min(height - 1, y + reach) / TILE_SIZE;
             for (int x = 0; x < width; x++) {
-                int at = 4 * (y * width + x);
-                double w = image[at + 3];
-                film.set(x, y, image[at] / w, image[at + 1] / w, image[at + 2] / w);
+                int column0 = Math.max(0, x - reach) / TILE_SIZE;
+                int column1 = Math.min(width - 1, x + reach) / TILE_SIZE;
+                int n = 0;
+                for (int row = row0; row <= row1; row++) {
+                    for (int column = column0; column <= column1; column++) {
+                        // insertion into list order
+                        int index = listIndex[row * columns + column];
+                        int k = n++;
+                        while (k > 0 && near[k - 1] > index) {
+                            near[k] = near[k - 1];
+                            k--;
+                        }
+                        near[k] = index;
+                    }
+                }
+                acc[0] = 0;
+                acc[1] = 0;
+                acc[2] = 0;
+                acc[3] = 0;
+                for (int k = 0; k < n; k++) {
+                    filtered[near[k]].addSums(x, y, acc);
+                }
+                film.set(x, y, acc[0] / acc[3], acc[1] / acc[3], acc[2] / acc[3]);
             }
         }
     }

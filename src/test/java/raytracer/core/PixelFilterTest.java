@@ -31,7 +31,11 @@ class PixelFilterTest {
             for (int i = 0; i < 100_000; i++) {
                 double d = (random.nextDouble() * 2 - 1) * 1.2 * f.radius();
                 worst = Math.max(worst, Math.abs(f.weight(d) - f.exactWeight(d)));
-                assertEquals(f.weight(d), f.weight(-d), "symmetric");
+            }
+            // at the table's nodes the formula itself, up to the rounding of d * 1024 / r
+            for (int i = 0; i <= 1024; i += 17) {
+                double node = i * f.radius() / 1024;
+                assertEquals(f.exactWeight(node), f.weight(node), 1e-12, "stddev " + stddev + ", node " + i);
             }
             // linear interpolation over steps h = r / 1024 = sigma / 256: error at most h^2 / 8 max|w''|,
             // and max|w''| = 1 / sigma^2, so 1 / (8 * 256^2) = 1.9e-6 whatever sigma
@@ -39,6 +43,18 @@ class PixelFilterTest {
             assertTrue(worst > 0, "the table is read, not the formula");
             assertEquals(0, f.weight(f.radius()));
             assertEquals(0, f.weight(Double.NaN), "a NaN distance weighs nothing");
+        }
+    }
+
+    @Test
+    void theBoxWeighsOneInsideItsHalfPixelAndNothingBeyond() {
+        for (double d : new double[] {0, 0.1, 0.25, 0.4999, -0.4999}) {
+            assertEquals(1, PixelFilter.BOX.weight(d), 1e-12, "d = " + d);
+            assertEquals(1, PixelFilter.BOX.exactWeight(d), "d = " + d);
+        }
+        for (double d : new double[] {0.5, 0.75, -2}) {
+            assertEquals(0, PixelFilter.BOX.weight(d), "d = " + d);
+            assertEquals(0, PixelFilter.BOX.exactWeight(d), "d = " + d);
         }
     }
 
