@@ -77,7 +77,7 @@ final class RenderRun {
             RenderStats stats = render(new Renderer(world, rayTree, workers, request.seed()), film);
             write(film, world.viewPlane(), encoding);
             if (!request.quiet()) {
-                report.summary(stats, request.output());
+                report.summary(stats, request.output(), world.viewPlane().filter());
             }
             if (request.stats()) {
                 report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);

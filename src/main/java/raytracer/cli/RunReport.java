@@ -7,6 +7,7 @@ import java.lang.management.MemoryType;
 import java.nio.file.Path;
 import java.util.List;
 import raytracer.accel.ObjectBVH;
+import raytracer.core.PixelFilter;
 import raytracer.core.Skip;
 import raytracer.core.Skipped;
 import raytracer.core.World;
@@ -42,8 +43,9 @@ final class RunReport {
                    range[0], range[1], samples == 1 ? "pixel" : "ray, averaged over each pixel");
     }
 
-    void summary(RenderStats s, Path out) {
-        err.println(summaryLine(s, out));
+    /** The summary line, naming the pixel filter when it is not the book's box (the image is then softer). */
+    void summary(RenderStats s, Path out, PixelFilter filter) {
+        err.println(summaryLine(s, out) + (filter.isBox() ? "" : ", " + filter + " filter"));
     }
 
     static String summaryLine(RenderStats s, Path out) {

@@ -338,6 +338,8 @@ class RenderCommandTest {
         Result gaussian = run(s.toString(), "-o", dir.resolve("gaussian.pfm").toString(), "--filter", "gaussian", "--seed", "3");
         assertEquals(0, box.code(), box.err());
         assertEquals(0, gaussian.code(), gaussian.err());
+        assertFalse(box.err().contains("filter"), "the book's box goes unmentioned: " + box.err());
+        assertTrue(gaussian.err().contains(", gaussian (standard deviation 0.5 pixel) filter"), "the summary names the filter: " + gaussian.err());
         Film b = ImageWriters.readPfm(dir.resolve("box.pfm"));
         Film g = ImageWriters.readPfm(dir.resolve("gaussian.pfm"));
         // along the middle row: the last lit pixel, then the first black one under the box
