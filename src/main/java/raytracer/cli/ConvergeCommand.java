@@ -18,7 +18,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
-import raytracer.core.PixelFilter;
 import raytracer.core.ViewPlane;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
@@ -100,6 +99,10 @@ final class ConvergeCommand implements Callable<Integer> {
                           + "scene): box or gaussian.")
     String filter;
 
+    @Option(names = "--filter-stddev", paramLabel = "S",
+            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian).")
+    Double filterStddev;
+
     @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")
     Integer width;
 
@@ -118,6 +121,9 @@ final class ConvergeCommand implements Callable<Integer> {
 
     @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
     boolean verbose;
+
+    /** --filter and --filter-stddev, checked. */
+    private FilterChoice filterChoice = new FilterChoice(null, null);
 
     /** The run's one pool, open while {@link #converge} runs. */
     private Workers workers;
@@ -196,8 +202,11 @@ final class ConvergeCommand implements Callable<Integer> {
         for (double t : budgets) {
             usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
         }
-        usageIf(filter != null && !PixelFilter.NAMES.contains(filter),
-                "unknown --filter '" + filter + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
+        try {
+            filterChoice = FilterChoice.parse(filter, filterStddev);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
+        }
         usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
         usageIf(threads < 1, "--threads must be at least 1, got " + threads);
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
@@ -240,9 +249,7 @@ final class ConvergeCommand implements Callable<Integer> {
         if (config.sampler() != null) {
             vp = vp.withSampler(Samplers.byName(config.sampler()));
         }
-        if (filter != null) {
-            vp = vp.withFilter(PixelFilter.named(filter));
-        }
+        vp = vp.withFilter(filterChoice.applyTo(vp.filter()));
         world.setViewPlane(vp.withResolution(width != null ? width : vp.hres(), height != null ? height : vp.vres()));
         RayTreeSettings rayTree = config.cutoff() != null ? loaded.rayTree().withCutoff(config.cutoff()) : loaded.rayTree();
         world.prepare(objects -> Aggregation.organize(objects, Aggregation.Mode.AUTO));

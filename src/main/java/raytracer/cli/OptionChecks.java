@@ -5,7 +5,6 @@ import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
-import raytracer.core.PixelFilter;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
@@ -52,7 +51,7 @@ final class OptionChecks {
         ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
         Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
-        PixelFilter filter = o.filter == null ? null : usage(() -> PixelFilter.named(o.filter));
+        FilterChoice filter = usage(() -> FilterChoice.parse(o.filter, o.filterStddev));
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
                                                       encoding);
         if (o.noCache && o.cacheDir != null) {

@@ -48,6 +48,10 @@ public final class RenderCommand implements Callable<Integer> {
                           + "samples) or gaussian (standard deviation 0.5 pixel, radius 2: less noise, slightly softer).")
     String filter;
 
+    @Option(names = "--filter-stddev", paramLabel = "S",
+            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian; its radius is 4 S).")
+    Double filterStddev;
+
     @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 

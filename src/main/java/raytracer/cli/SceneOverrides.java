@@ -1,6 +1,5 @@
 package raytracer.cli;
 
-import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
@@ -13,7 +12,7 @@ import raytracer.image.DisplayEncoding;
  * filter and depth of the view plane, the term pass and the cutoff, the PNG encoding. A null field leaves the
  * scene's value.
  */
-record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sampler, PixelFilter filter, Integer maxDepth,
+record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sampler, FilterChoice filter, Integer maxDepth,
                       ShadingPass pass, Double cutoff, DisplayEncoding encoding) {
 
     /** Gives {@code world} the view plane with the overridden size, samples, sampler and depth. */
@@ -31,9 +30,8 @@ record SceneOverrides(Integer width, Integer height, Integer samples, Sampler sa
         if (maxDepth != null) {
             vp = vp.withMaxDepth(maxDepth);
         }
-        if (filter != null && !filter.name().equals(vp.filter().name())) {
-            // the same filter as the scene's keeps the scene's width (filter-stddev)
-            vp = vp.withFilter(filter);
+        if (filter != null) {
+            vp = vp.withFilter(filter.applyTo(vp.filter()));
         }
         world.setViewPlane(vp);
     }

@@ -340,6 +340,12 @@ class RenderCommandTest {
         assertEquals(0, gaussian.code(), gaussian.err());
         assertFalse(box.err().contains("filter"), "the book's box goes unmentioned: " + box.err());
         assertTrue(gaussian.err().contains(", gaussian (standard deviation 0.5 pixel) filter"), "the summary names the filter: " + gaussian.err());
+        Result wide = run(s.toString(), "-o", dir.resolve("wide.pfm").toString(), "--filter-stddev", "1");
+        assertEquals(0, wide.code(), wide.err());
+        assertTrue(wide.err().contains(", gaussian (standard deviation 1.0 pixel) filter"), wide.err());
+        Result both = run(s.toString(), "-o", dir.resolve("both.pfm").toString(), "--filter", "box", "--filter-stddev", "1");
+        assertEquals(2, both.code(), both.err());
+        assertTrue(both.err().contains("--filter-stddev is for --filter gaussian, not box"), both.err());
         Film b = ImageWriters.readPfm(dir.resolve("box.pfm"));
         Film g = ImageWriters.readPfm(dir.resolve("gaussian.pfm"));
         // along the middle row: the last lit pixel, then the first black one under the box
@@ -363,7 +369,7 @@ class RenderCommandTest {
             {"--width", "0"}, {"--height", "-3"}, {"--spp", "0"}, {"--threads", "0"}, {"--threads", "32768"}, {"--max-depth", "-1"}, {"--max-depth", "100000"},
             {"--repeat", "0"}, {"--cutoff", "-1"}, {"--cutoff", "1"}, {"--spp", "many"}, {"--view", "x-ray"},
             {"--accel", "kd-tree"}, {"--encoding", "gamma"}, {"--pass", "glow"}, {"--sampler", "poisson-disk"}, {"--frobnicate", "1"},
-            {"--filter", "mitchell"},
+            {"--filter", "mitchell"}, {"--filter-stddev", "3"},
         };
         for (String[] c : cases) {
             Result r = run("-o", out, c[0], c[1]);

@@ -1,6 +1,7 @@
 package raytracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import org.junit.jupiter.api.Test;
 import raytracer.cameras.Pinhole;
@@ -13,17 +14,32 @@ import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 import raytracer.samplers.Samplers;
 
-/** --filter replaces the scene's filter by name; naming the scene's own keeps its width. */
+/** --filter and --filter-stddev against the scene's filter. */
 class SceneOverridesFilterTest {
     @Test
-    void theSameFilterKeepsTheScenesStandardDeviation() {
-        assertEquals(1.5, filterAfter(PixelFilter.gaussian(1.5), PixelFilter.named("gaussian")).stddev());
-        assertEquals(PixelFilter.BOX, filterAfter(PixelFilter.gaussian(1.5), PixelFilter.BOX));
-        assertEquals(0.5, filterAfter(PixelFilter.BOX, PixelFilter.named("gaussian")).stddev());
-        assertEquals(1.5, filterAfter(PixelFilter.gaussian(1.5), null).stddev(), "no option: the scene's");
+    void theOptionsReplaceTheScenesFilterAsAsked() {
+        PixelFilter wide = PixelFilter.gaussian(1.5);
+        assertEquals(wide, filterAfter(wide, FilterChoice.parse(null, null)), "no option: the scene's");
+        assertEquals(1.5, filterAfter(wide, FilterChoice.parse("gaussian", null)).stddev(), "the same filter keeps the scene's width");
+        assertEquals(PixelFilter.BOX, filterAfter(wide, FilterChoice.parse("box", null)));
+        assertEquals(0.5, filterAfter(PixelFilter.BOX, FilterChoice.parse("gaussian", null)).stddev(), "the default width");
+        assertEquals(0.8, filterAfter(PixelFilter.BOX, FilterChoice.parse(null, 0.8)).stddev(), "a width alone asks for the Gaussian");
+        assertEquals(0.8, filterAfter(wide, FilterChoice.parse("gaussian", 0.8)).stddev(), "the given width wins");
     }
 
-    private static PixelFilter filterAfter(PixelFilter scene, PixelFilter option) {
+    @Test
+    void badChoicesSayWhatIsWrong() {
+        assertEquals("unknown --filter 'mitchell'; allowed: box, gaussian",
+                     assertThrows(IllegalArgumentException.class, () -> FilterChoice.parse("mitchell", null)).getMessage());
+        assertEquals("--filter-stddev is for --filter gaussian, not box",
+                     assertThrows(IllegalArgumentException.class, () -> FilterChoice.parse("box", 1.0)).getMessage());
+        for (double bad : new double[] {0.1, 2.5, Double.NaN}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> FilterChoice.parse(null, bad));
+            assertEquals("--filter-stddev must be 0.2 to 2.0 pixels, got " + bad, e.getMessage());
+        }
+    }
+
+    private static PixelFilter filterAfter(PixelFilter scene, FilterChoice option) {
         ViewPlane vp = new ViewPlane(4, 4, 1, Samplers.byName("regular"), 1, 1, scene);
         World world = new World(vp, new Pinhole(new Point3D(0, 0, 5), new Point3D(0, 0, 0), new Vector3D(0, 1, 0), 40),
                                 new Ambient(0, RGBColor.WHITE));

@@ -1,0 +1,40 @@
+package raytracer.cli;
+
+import raytracer.core.PixelFilter;
+
+/**
+ * What {@code --filter} and {@code --filter-stddev} ask of the scene's pixel filter. A null name
+ * and width leave the scene's; a width alone asks for the Gaussian of that width; the Gaussian
+ * named without a width keeps the scene's width when the scene's filter is the Gaussian too.
+ */
+record FilterChoice(String name, Double stddev) {
+
+    /** The choice, or IllegalArgumentException saying what is wrong with it. */
+    static FilterChoice parse(String name, Double stddev) {
+        if (name != null && !PixelFilter.NAMES.contains(name)) {
+            throw new IllegalArgumentException("unknown --filter '" + name + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
+        }
+        if (stddev != null && "box".equals(name)) {
+            throw new IllegalArgumentException("--filter-stddev is for --filter gaussian, not box");
+        }
+        if (stddev != null && !(stddev >= PixelFilter.MIN_STDDEV && stddev <= PixelFilter.MAX_STDDEV)) {
+            throw new IllegalArgumentException("--filter-stddev must be " + PixelFilter.MIN_STDDEV + " to " + PixelFilter.MAX_STDDEV
+                                               + " pixels, got " + stddev);
+        }
+        return new FilterChoice(name, stddev);
+    }
+
+    /** The filter to render with, given the scene's. */
+    PixelFilter applyTo(PixelFilter scene) {
+        if (name == null && stddev == null) {
+            return scene;
+        }
+        if ("box".equals(name)) {
+            return PixelFilter.BOX;
+        }
+        if (stddev != null) {
+            return PixelFilter.gaussian(stddev);
+        }
+        return scene.isBox() ? PixelFilter.named("gaussian") : scene;
+    }
+}
