@@ -42,7 +42,7 @@ class ArchitectureTest {
         Pattern.compile("(?<![A-Za-z0-9_$/])L?raytracer((?:/[a-z][a-z0-9_]*)+)/[A-Z]");
 
     private static final Set<String> FAMILIES = Set.of("samplers", "cameras", "shapes", "shapes.mesh", "accel", "brdf",
-                                                       "btdf", "textures", "materials", "lights", "tracers");
+                                                       "btdf", "textures", "materials", "lights", "tracers", "filters");
 
     /** For each package, the packages (besides itself) it may use. */
     private static final Map<String, Set<String>> ALLOWED = Map.ofEntries(
@@ -59,6 +59,7 @@ class ArchitectureTest {
         Map.entry("materials", Set.of("math", "core", "brdf", "btdf")),
         Map.entry("lights", Set.of("math", "core")),
         Map.entry("tracers", Set.of("math", "core")),
+        Map.entry("filters", Set.of("math", "core")),
         // a texture needs a decoded raster: the one family allowed to use image (which uses only math)
         Map.entry("textures", Set.of("math", "core", "image")),
         Map.entry("image", Set.of("math")),

@@ -124,7 +124,7 @@ final class ConvergeReference {
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
-                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-stddev=" + vp.filter().stddev() + "\n");
+                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n");
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
         Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);

@@ -1,6 +1,8 @@
 package raytracer.cli;
 
 import raytracer.core.PixelFilter;
+import raytracer.filters.Filters;
+import raytracer.filters.Gaussian;
 
 /**
  * What {@code --filter} and {@code --filter-stddev} ask of the scene's pixel filter. A null name
@@ -11,14 +13,14 @@ record FilterChoice(String name, Double stddev) {
 
     /** The choice, or IllegalArgumentException saying what is wrong with it. */
     static FilterChoice parse(String name, Double stddev) {
-        if (name != null && !PixelFilter.NAMES.contains(name)) {
-            throw new IllegalArgumentException("unknown --filter '" + name + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
+        if (name != null && !Filters.names().contains(name)) {
+            throw new IllegalArgumentException("unknown --filter '" + name + "'; allowed: " + String.join(", ", Filters.names()));
         }
         if (stddev != null && "box".equals(name)) {
             throw new IllegalArgumentException("--filter-stddev is for --filter gaussian, not box");
         }
-        if (stddev != null && !(stddev >= PixelFilter.MIN_STDDEV && stddev <= PixelFilter.MAX_STDDEV)) {
-            throw new IllegalArgumentException("--filter-stddev must be " + PixelFilter.MIN_STDDEV + " to " + PixelFilter.MAX_STDDEV
+        if (stddev != null && !(stddev >= Gaussian.MIN_STDDEV && stddev <= Gaussian.MAX_STDDEV)) {
+            throw new IllegalArgumentException("--filter-stddev must be " + Gaussian.MIN_STDDEV + " to " + Gaussian.MAX_STDDEV
                                                + " pixels, got " + stddev);
         }
         return new FilterChoice(name, stddev);
@@ -33,8 +35,8 @@ record FilterChoice(String name, Double stddev) {
             return PixelFilter.BOX;
         }
         if (stddev != null) {
-            return PixelFilter.gaussian(stddev);
+            return new Gaussian(stddev);
         }
-        return scene.isBox() ? PixelFilter.named("gaussian") : scene;
+        return scene.name().equals("gaussian") ? scene : Filters.byName("gaussian");
     }
 }

@@ -8,6 +8,7 @@ import raytracer.cameras.Pinhole;
 import raytracer.core.PixelFilter;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.filters.Gaussian;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
@@ -18,13 +19,13 @@ import raytracer.samplers.Samplers;
 class SceneOverridesFilterTest {
     @Test
     void theOptionsReplaceTheScenesFilterAsAsked() {
-        PixelFilter wide = PixelFilter.gaussian(1.5);
+        PixelFilter wide = new Gaussian(1.5);
         assertEquals(wide, filterAfter(wide, FilterChoice.parse(null, null)), "no option: the scene's");
-        assertEquals(1.5, filterAfter(wide, FilterChoice.parse("gaussian", null)).stddev(), "the same filter keeps the scene's width");
+        assertEquals(1.5, ((Gaussian) filterAfter(wide, FilterChoice.parse("gaussian", null))).stddev(), "the same filter keeps the scene's width");
         assertEquals(PixelFilter.BOX, filterAfter(wide, FilterChoice.parse("box", null)));
-        assertEquals(0.5, filterAfter(PixelFilter.BOX, FilterChoice.parse("gaussian", null)).stddev(), "the default width");
-        assertEquals(0.8, filterAfter(PixelFilter.BOX, FilterChoice.parse(null, 0.8)).stddev(), "a width alone asks for the Gaussian");
-        assertEquals(0.8, filterAfter(wide, FilterChoice.parse("gaussian", 0.8)).stddev(), "the given width wins");
+        assertEquals(0.5, ((Gaussian) filterAfter(PixelFilter.BOX, FilterChoice.parse("gaussian", null))).stddev(), "the default width");
+        assertEquals(0.8, ((Gaussian) filterAfter(PixelFilter.BOX, FilterChoice.parse(null, 0.8))).stddev(), "a width alone asks for the Gaussian");
+        assertEquals(0.8, ((Gaussian) filterAfter(wide, FilterChoice.parse("gaussian", 0.8))).stddev(), "the given width wins");
     }
 
     @Test

@@ -10,6 +10,7 @@ import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
+import raytracer.filters.Gaussian;
 import raytracer.image.Film;
 import raytracer.lights.Ambient;
 import raytracer.math.Hashes;
@@ -24,7 +25,7 @@ import raytracer.samplers.Samplers;
  * thread count; the box filter's images are the plain averages they always were.
  */
 class FilteredRenderTest {
-    private static final PixelFilter GAUSSIAN = PixelFilter.named("gaussian");
+    private static final Gaussian GAUSSIAN = new Gaussian(Gaussian.DEFAULT_STDDEV);
 
     @Test
     void anEdgeIsTheFilterWeightedAverageOfTheSamplesAroundEachPixel() {

@@ -10,6 +10,7 @@ import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
+import raytracer.filters.Gaussian;
 import raytracer.image.Film;
 import raytracer.lights.Ambient;
 import raytracer.math.Hashes;
@@ -33,7 +34,7 @@ class FilteredSeamTest {
     @Test
     void everyPixelIsTheWeightedAverageOfAllTheSamplesAroundIt() {
         for (double stddev : new double[] {0.5, 1.0}) {
-            PixelFilter filter = PixelFilter.gaussian(stddev);
+            Gaussian filter = new Gaussian(stddev);
             Film film = render(filter);
             double worst = 0;
             for (int y = 0; y < HEIGHT; y++) {
@@ -48,7 +49,7 @@ class FilteredSeamTest {
     }
 
     /** Sum over every sample s of the image of w(xs - cx) w(ys - cy) L(s), over the sum of the weights. */
-    private static double bruteForce(PixelFilter filter, int x, int y) {
+    private static double bruteForce(Gaussian filter, int x, int y) {
         double sum = 0;
         double weights = 0;
         for (int py = 0; py < HEIGHT; py++) {

@@ -24,12 +24,14 @@ import org.yaml.snakeyaml.resolver.Resolver;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
-import raytracer.core.RayTreeSettings;
 import raytracer.core.PixelFilter;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.filters.Filters;
+import raytracer.filters.Gaussian;
 import raytracer.image.DisplayEncoding;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
@@ -207,21 +209,21 @@ public final class SceneLoader {
 
     private static PixelFilter readFilter(Source source, YamlObject image) throws SceneException {
         String name = image.string("filter", "box");
-        if (!PixelFilter.NAMES.contains(name)) {
-            throw source.error(image.raw("filter"), "unknown filter '" + name + "'; allowed: " + String.join(", ", PixelFilter.NAMES));
+        if (!Filters.names().contains(name)) {
+            throw source.error(image.raw("filter"), "unknown filter '" + name + "'; allowed: " + String.join(", ", Filters.names()));
         }
         if (!image.has("filter-stddev")) {
-            return PixelFilter.named(name);
+            return Filters.byName(name);
         }
         if (!name.equals("gaussian")) {
             throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image is for filter: gaussian, not " + name);
         }
-        double stddev = image.number("filter-stddev", PixelFilter.DEFAULT_STDDEV);
-        if (!(stddev >= PixelFilter.MIN_STDDEV && stddev <= PixelFilter.MAX_STDDEV)) {
-            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image must be " + PixelFilter.MIN_STDDEV + " to "
-                               + PixelFilter.MAX_STDDEV + " pixels, got " + stddev);
+        double stddev = image.number("filter-stddev", Gaussian.DEFAULT_STDDEV);
+        if (!(stddev >= Gaussian.MIN_STDDEV && stddev <= Gaussian.MAX_STDDEV)) {
+            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image must be " + Gaussian.MIN_STDDEV + " to "
+                               + Gaussian.MAX_STDDEV + " pixels, got " + stddev);
         }
-        return PixelFilter.gaussian(stddev);
+        return new Gaussian(stddev);
     }
 
     /**

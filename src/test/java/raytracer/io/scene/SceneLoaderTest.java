@@ -20,6 +20,7 @@ import raytracer.core.RayTreeSettings;
 import raytracer.core.ShadingPass;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
+import raytracer.filters.Gaussian;
 import raytracer.image.DisplayEncoding;
 import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
@@ -94,11 +95,11 @@ class SceneLoaderTest {
     @Test
     void theImageMayAskForTheGaussianFilter() throws SceneException {
         assertEquals(PixelFilter.BOX, SceneLoader.load("s.yaml", BASE).world().viewPlane().filter(), "the book's box by default");
-        PixelFilter standard = SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, "))
+        Gaussian standard = (Gaussian) SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, "))
             .world().viewPlane().filter();
         assertEquals("gaussian", standard.name());
         assertEquals(0.5, standard.stddev());
-        PixelFilter wide = SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, filter-stddev: 1, "))
+        Gaussian wide = (Gaussian) SceneLoader.load("s.yaml", BASE.replace("image: {", "image: {filter: gaussian, filter-stddev: 1, "))
             .world().viewPlane().filter();
         assertEquals(1, wide.stddev());
         assertEquals(4, wide.radius());
