@@ -45,7 +45,7 @@ class TentFilterExercise {
 
     @Test
     void theWeightIsTheTent() {
-        for (double r : new double[] {0.5, 1, 1.5, 3}) {
+        for (double r : new double[] {0.75, 1, 1.5, 3, 8}) {
             PixelFilter f = tent(r);
             assertEquals(r, f.radius());
             assertEquals("tent", f.name());
@@ -57,8 +57,8 @@ class TentFilterExercise {
     }
 
     @Test
-    void aRadiusOutsideHalfAPixelToEightIsRefused() {
-        for (double bad : new double[] {0, 0.4, 8.5, Double.NaN}) {
+    void aRadiusNotAboveHalfAPixelOrAboveEightIsRefused() {
+        for (double bad : new double[] {0, 0.4, 0.5, 8.5, Double.NaN}) {
             InvocationTargetException e = assertThrows(InvocationTargetException.class, () -> tent.newInstance(bad), "radius " + bad);
             assertEquals(IllegalArgumentException.class, e.getCause().getClass(), "radius " + bad);
         }
@@ -66,12 +66,12 @@ class TentFilterExercise {
 
     @Test
     void anEdgeIsTheTentWeightedAverageOfTheSamplesAroundEachPixel() {
-        // radiance 1 left of x = 21.3, 0 right of it, over 48 x 3 pixels (two tiles wide); the regular
-        // sampler's 4 x 4 grid. The weights are separable and the radiance does not change with y,
+        // radiance 1 left of x = 31.7, 0 right of it, over 48 x 3 pixels: the edge lies at the seam of
+        // two tiles (x = 32), so pixels 30 to 33 mix both tiles' samples; the regular sampler's 4 x 4 grid. The weights are separable and the radiance does not change with y,
         // so a pixel is sum w(x_s - c) step(x_s) / sum w(x_s - c) over the image's sample columns.
         int width = 48;
         int height = 3;
-        double edge = 21.3;
+        double edge = 31.7;
         PixelFilter filter = tent(1.5);
         ViewPlane vp = new ViewPlane(width, height, 16, Samplers.byName("regular"), 1, 1, filter);
         Camera camera = (plane, px, py, lensX, lensY, out) -> out.set(px, py, 0, 0, 0, 1);

@@ -100,7 +100,7 @@ final class ConvergeCommand implements Callable<Integer> {
     String filter;
 
     @Option(names = "--filter-stddev", paramLabel = "S",
-            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian).")
+            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian; its radius is 4 S).")
     Double filterStddev;
 
     @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")

@@ -6,8 +6,9 @@ import raytracer.filters.Gaussian;
 
 /**
  * What {@code --filter} and {@code --filter-stddev} ask of the scene's pixel filter. A null name
- * and width leave the scene's; a width alone asks for the Gaussian of that width; the Gaussian
- * named without a width keeps the scene's width when the scene's filter is the Gaussian too.
+ * and width leave the scene's; a width alone asks for the Gaussian of that width; a filter named
+ * without a width is the scene's own, width and all, when the scene has that filter, else the
+ * named filter at its default width.
  */
 record FilterChoice(String name, Double stddev) {
 
@@ -16,8 +17,8 @@ record FilterChoice(String name, Double stddev) {
         if (name != null && !Filters.names().contains(name)) {
             throw new IllegalArgumentException("unknown --filter '" + name + "'; allowed: " + String.join(", ", Filters.names()));
         }
-        if (stddev != null && "box".equals(name)) {
-            throw new IllegalArgumentException("--filter-stddev is for --filter gaussian, not box");
+        if (stddev != null && name != null && !name.equals("gaussian")) {
+            throw new IllegalArgumentException("--filter-stddev is for --filter gaussian, not " + name);
         }
         if (stddev != null && !(stddev >= Gaussian.MIN_STDDEV && stddev <= Gaussian.MAX_STDDEV)) {
             throw new IllegalArgumentException("--filter-stddev must be " + Gaussian.MIN_STDDEV + " to " + Gaussian.MAX_STDDEV
@@ -31,12 +32,10 @@ record FilterChoice(String name, Double stddev) {
         if (name == null && stddev == null) {
             return scene;
         }
-        if ("box".equals(name)) {
-            return PixelFilter.BOX;
-        }
         if (stddev != null) {
             return new Gaussian(stddev);
         }
-        return scene.name().equals("gaussian") ? scene : Filters.byName("gaussian");
+        // a width alone is the Gaussian's; the scene's own filter, named again, keeps its width
+        return scene.name().equals(name) ? scene : Filters.byName(name);
     }
 }

@@ -45,7 +45,8 @@ final class RunReport {
 
     /** The summary line, naming the pixel filter when it is not the book's box (the image is then softer). */
     void summary(RenderStats s, Path out, PixelFilter filter) {
-        err.println(summaryLine(s, out) + (filter.isBox() ? "" : ", " + filter + " filter"));
+        err.println(summaryLine(s, out) + (filter.isBox() ? "" : String.format(", %s filter of radius %s pixels", filter.name(),
+                                                                                        filter.radius())));
     }
 
     static String summaryLine(RenderStats s, Path out) {

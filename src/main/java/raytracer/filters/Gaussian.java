@@ -15,8 +15,8 @@ public final class Gaussian implements PixelFilter {
     /** The narrowest: its radius, 4 sigma, must reach past a pixel's own half width. */
     public static final double MIN_STDDEV = 0.2;
     /**
-     * The widest: a sample then reaches 8 pixels each way, 289 pixels in all, still less than a
-     * tile's size, so a pixel lies in the margins of at most four tiles (Renderer.resolve).
+     * The widest: a sample then reaches 8 pixels each way, 289 pixels in all, within the half tile
+     * that the renderer gathers from (Renderer.checkFilter).
      */
     public static final double MAX_STDDEV = 2;
     /**

@@ -86,6 +86,7 @@ public final class Renderer {
             return s;
         });
         PixelFilter filter = vp.filter();
+        checkFilter(filter);
         FilteredTile[] filtered = filter.isBox() ? null : new FilteredTile[tiles.size()];
         long start = System.nanoTime();
         workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered));
@@ -143,11 +144,28 @@ public final class Renderer {
     }
 
     /**
+     * Refuses, before any ray is traced, a filter that {@link #resolve} cannot gather: one whose
+     * radius does not pass a pixel's half width (a sample at its pixel's edge could weigh nothing,
+     * and a pixel all of whose samples did would be 0 / 0), or reaches past half a tile (a pixel
+     * would then lie in the margins of more than two tiles along an axis).
+     */
+    private static void checkFilter(PixelFilter filter) {
+        if (filter.isBox()) {
+            return;
+        }
+        if (!(filter.radius() > 0.5) || filter.reach() > TILE_SIZE / 2) {
+            throw new IllegalArgumentException("the " + filter.name() + " filter's radius must be above 0.5 and below "
+                                               + (TILE_SIZE / 2 + 0.5) + " pixels, got " + filter.radius());
+        }
+    }
+
+    /**
      * Makes each pixel the weighted average of the samples that reached it: the sums of the tiles
-     * whose margins hold it (its own and at most three neighbours, since the reach is below a
-     * tile's size), added in the order of the tile list, then divided by the summed weight (which
-     * is positive, since a pixel's own samples lie within the filter's radius of its centre). Pixel
-     * by pixel, so no image of sums is held beside the tiles'.
+     * whose margins hold it (its own and at most three neighbours, since the reach is at most half
+     * a tile: at most two tiles along each axis), added in the order of the tile list, then divided
+     * by the summed weight (which is positive, since the radius passes a pixel's half width, so
+     * the pixel's own samples weigh something). Pixel by pixel, so no image of sums is held beside
+     * the tiles'.
      */
     private static void resolve(FilteredTile[] filtered, Film film, int reach) {
         int width = film.width();

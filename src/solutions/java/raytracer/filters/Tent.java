@@ -7,8 +7,8 @@ public final class Tent implements PixelFilter {
     private final double radius;
 
     public Tent(double radius) {
-        if (!(radius >= 0.5 && radius <= 8)) {
-            throw new IllegalArgumentException("the tent's radius must be 0.5 to 8 pixels, got " + radius);
+        if (!(radius > 0.5 && radius <= 8)) {
+            throw new IllegalArgumentException("the tent's radius must be above 0.5 and at most 8 pixels, got " + radius);
         }
         this.radius = radius;
     }

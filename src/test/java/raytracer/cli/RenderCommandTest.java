@@ -339,10 +339,10 @@ class RenderCommandTest {
         assertEquals(0, box.code(), box.err());
         assertEquals(0, gaussian.code(), gaussian.err());
         assertFalse(box.err().contains("filter"), "the book's box goes unmentioned: " + box.err());
-        assertTrue(gaussian.err().contains(", gaussian (standard deviation 0.5 pixel) filter"), "the summary names the filter: " + gaussian.err());
+        assertTrue(gaussian.err().contains(", gaussian filter of radius 2.0 pixels"), "the summary names the filter: " + gaussian.err());
         Result wide = run(s.toString(), "-o", dir.resolve("wide.pfm").toString(), "--filter-stddev", "1");
         assertEquals(0, wide.code(), wide.err());
-        assertTrue(wide.err().contains(", gaussian (standard deviation 1.0 pixel) filter"), wide.err());
+        assertTrue(wide.err().contains(", gaussian filter of radius 4.0 pixels"), wide.err());
         Result both = run(s.toString(), "-o", dir.resolve("both.pfm").toString(), "--filter", "box", "--filter-stddev", "1");
         assertEquals(2, both.code(), both.err());
         assertTrue(both.err().contains("--filter-stddev is for --filter gaussian, not box"), both.err());

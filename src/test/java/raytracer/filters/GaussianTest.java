@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
-/** The pixel filters' weights against their formulas, and how far a sample reaches. */
+/** The Gaussian's weights against its formula, its table and its reach. */
 class GaussianTest {
     @Test
     void theGaussianIsMitsubasDefault() {

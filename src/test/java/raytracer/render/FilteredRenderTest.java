@@ -1,6 +1,7 @@
 package raytracer.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
@@ -110,6 +111,33 @@ class FilteredRenderTest {
         Film film = render(world, 2);
         for (int x = 0; x < 6; x++) {
             assertEquals(x + 0.5, film.get(x, 1, 0), 1e-6);
+        }
+    }
+
+    @Test
+    void aFilterTheTilesCannotGatherIsRefusedBeforeRendering() {
+        // radius 0.5: a sample on its pixel's edge weighs nothing; reach 17: more than two tiles per axis
+        for (double radius : new double[] {0.5, 17.2}) {
+            PixelFilter tent = new PixelFilter() {
+                @Override
+                public String name() {
+                    return "tent";
+                }
+
+                @Override
+                public double radius() {
+                    return radius;
+                }
+
+                @Override
+                public double weight(double d) {
+                    return Math.max(0, 1 - Math.abs(d) / radius);
+                }
+            };
+            World world = world(4, 4, 1, "hammersley", (px, py) -> 1);
+            world.setViewPlane(world.viewPlane().withFilter(tent));
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> render(world, 1));
+            assertEquals("the tent filter's radius must be above 0.5 and below 16.5 pixels, got " + radius, e.getMessage());
         }
     }
 

@@ -33,7 +33,7 @@ class FilteredSeamTest {
 
     @Test
     void everyPixelIsTheWeightedAverageOfAllTheSamplesAroundIt() {
-        for (double stddev : new double[] {0.5, 1.0}) {
+        for (double stddev : new double[] {0.5, 1.0, 2.0}) {
             Gaussian filter = new Gaussian(stddev);
             Film film = render(filter);
             double worst = 0;
