@@ -94,6 +94,11 @@ final class ConvergeCommand implements Callable<Integer> {
     @Option(names = "--csv", paramLabel = "FILE", description = "Also write the table as comma-separated values.")
     Path csv;
 
+    @Option(names = "--metric", paramLabel = "M",
+            description = "What the errors are measured on: linear (radiance, as the .pfm output holds it; the default) or srgb "
+                          + "(the display's values, clamped and sRGB-encoded, as a PNG holds them).")
+    String metric = "linear";
+
     @Option(names = "--filter", paramLabel = "NAME",
             description = "How pixels are made from samples, for every curve and a self-rendered reference (overrides the "
                           + "scene): box or gaussian.")
@@ -179,14 +184,20 @@ final class ConvergeCommand implements Callable<Integer> {
         out.print(ConvergeReport.table(rows));
         ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
             "slope of log error against log seconds, %s: %.2f%n", name, slope));
-        out.println("reference: " + ref.what() + ConvergeReport.noiseNote(ref.noiseRmse(), rows.get(0).error().referenceMean()));
+        // the reference's noise is known in linear units only
+        double noise = metric.equals("srgb") ? Double.NaN : ref.noiseRmse();
+        out.println("reference: " + ref.what() + ConvergeReport.noiseNote(noise, rows.get(0).error().referenceMean()));
+        if (metric.equals("srgb")) {
+            out.println("metric: the displayed values, clamped to [0, 1] and sRGB-encoded");
+            note.println("converge: metric: the displayed values, clamped to [0, 1] and sRGB-encoded");
+        }
         out.flush();
         if (csv != null) {
             AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
         }
         String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
                        + " thread" + (threads == 1 ? "" : "s") + ")";
-        ConvergeReport.chart(title, rows, ref.noiseRmse()).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
+        ConvergeReport.chart(title, rows, noise).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
     }
@@ -207,6 +218,7 @@ final class ConvergeCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
+        usageIf(!List.of("linear", "srgb").contains(metric), "--metric must be linear or srgb, got '" + metric + "'");
         usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
         usageIf(threads < 1, "--threads must be at least 1, got " + threads);
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
@@ -301,7 +313,8 @@ final class ConvergeCommand implements Callable<Integer> {
                 : (int) Math.max(1, Math.min(1 << 20, Math.round(budgets.get(i - counts.size()) / secondsPerSpp)));
             RenderStats stats = render(withSamples(world, n), film, seed, name + ", " + n + " spp");
             secondsPerSpp = stats.seconds() / stats.samplesPerPixel();
-            ErrorMetrics error = ErrorMetrics.compare(film, exposure, ref);
+            ErrorMetrics error = metric.equals("srgb") ? ErrorMetrics.compareDisplayed(film, exposure, ref)
+                : ErrorMetrics.compare(film, exposure, ref);
             rows.add(new ConvergeRow(name, stats.samplesPerPixel(), lights, stats.seconds(), error));
             note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,
                         stats.samplesPerPixel(), stats.seconds(), error.relativeRmse());

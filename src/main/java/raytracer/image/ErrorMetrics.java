@@ -12,7 +12,9 @@ package raytracer.image;
  *     from the top left, the first such pixel in row order.</li>
  * </ul>
  * The image's values are multiplied by a scale first (the scene's exposure, so a film compares
- * with the .pfm files the renderer writes).
+ * with the .pfm files the renderer writes). {@link #compareDisplayed} compares the values a display
+ * gets instead: both images clamped to [0, 1] and sRGB-encoded (without rounding to 8 bits), as PNG
+ * files hold them, where an error in the shadows weighs more than the same error in the lights.
  */
 public record ErrorMetrics(double rmse, double relativeRmse, double relativeMse, double worst, int worstX, int worstY,
                            double referenceMean) {
@@ -20,6 +22,19 @@ public record ErrorMetrics(double rmse, double relativeRmse, double relativeMse,
 
     /** Compares {@code image} (times {@code scale}) with {@code reference}, which must be as large. */
     public static ErrorMetrics compare(Film image, double scale, Film reference) {
+        return compare(image, scale, reference, false);
+    }
+
+    /** As {@link #compare}, on the sRGB-encoded values of both images clamped to [0, 1]. */
+    public static ErrorMetrics compareDisplayed(Film image, double scale, Film reference) {
+        return compare(image, scale, reference, true);
+    }
+
+    private static double displayed(double linear) {
+        return ToneMap.srgbEncode(Math.min(1, Math.max(0, linear)));
+    }
+
+    private static ErrorMetrics compare(Film image, double scale, Film reference, boolean srgb) {
         if (image.width() != reference.width() || image.height() != reference.height()) {
             throw new IllegalArgumentException("the image is " + image.width() + "x" + image.height()
                                                + " but the reference is " + reference.width() + "x" + reference.height());
@@ -33,8 +48,9 @@ public record ErrorMetrics(double rmse, double relativeRmse, double relativeMse,
         for (int y = 0; y < image.height(); y++) {
             for (int x = 0; x < image.width(); x++) {
                 for (int c = 0; c < 3; c++) {
-                    double r = reference.get(x, y, c);
-                    double d = image.get(x, y, c) * scale - r;
+                    double r = srgb ? displayed(reference.get(x, y, c)) : reference.get(x, y, c);
+                    double v = image.get(x, y, c) * scale;
+                    double d = (srgb ? displayed(v) : v) - r;
                     squares += d * d;
                     relative += d * d / (r * r + RELATIVE_MSE_EPSILON);
                     referenceSum += r;

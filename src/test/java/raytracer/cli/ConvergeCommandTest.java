@@ -166,6 +166,26 @@ class ConvergeCommandTest {
     }
 
     @Test
+    void theSrgbMetricMeasuresTheDisplayedValues() throws IOException {
+        // the same renders measured both ways: the sRGB curve stretches the dark values, so the
+        // errors differ, and the reference's linear noise is not claimed for the displayed values
+        Path linearCsv = dir.resolve("linear.csv");
+        Path srgbCsv = dir.resolve("srgb.csv");
+        String scene = Path.of("scenes", "closed-form-rectangle.yaml").toString();
+        Result linear = converge(scene, "-W", "16", "-H", "16", "--spp", "4", "--csv", linearCsv.toString(),
+                                 "--plot", dir.resolve("l.png").toString());
+        Result srgb = converge(scene, "-W", "16", "-H", "16", "--spp", "4", "--metric", "srgb", "--csv", srgbCsv.toString(),
+                               "--plot", dir.resolve("s.png").toString());
+        assertEquals(0, linear.code(), linear.err());
+        assertEquals(0, srgb.code(), srgb.err());
+        assertTrue(srgb.err().contains("converge: metric: the displayed values, clamped to [0, 1] and sRGB-encoded"), srgb.err());
+        assertFalse(linear.err().contains("metric:"), linear.err());
+        double l = Double.parseDouble(rows(linearCsv).get(0)[5]);
+        double s = Double.parseDouble(rows(srgbCsv).get(0)[5]);
+        assertTrue(l > 0 && s > 0 && Math.abs(l - s) > 0.01 * l, "relative RMSE linear " + l + ", sRGB " + s);
+    }
+
+    @Test
     void badOptionsAreUsageErrors() throws IOException {
         Path scene = write("spheres.yaml", SPHERES);
         assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be at least 1, got 0");
@@ -173,6 +193,7 @@ class ConvergeCommandTest {
         assertOneLine(converge(scene.toString(), "--config", "sampler=poisson-disk"), 2, "unknown sampler 'poisson-disk'; allowed: regular");
         assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");
         assertOneLine(converge(scene.toString(), "--filter", "mitchell"), 2, "unknown --filter 'mitchell'; allowed: box, gaussian");
+        assertOneLine(converge(scene.toString(), "--metric", "log"), 2, "--metric must be linear or srgb, got 'log'");
         // the exact images are box-filtered: the Gaussian cannot be measured against them
         assertOneLine(converge(Path.of("scenes", "closed-form-rectangle.yaml").toString(), "--filter", "gaussian", "--reference",
                                "closed-form", "-W", "8", "-H", "8", "--plot", dir.resolve("g.png").toString()),

@@ -37,6 +37,20 @@ class ErrorMetricsTest {
     }
 
     @Test
+    void theDisplayedValuesAreClampedAndSrgbEncodedByHand() {
+        Film[] f = twoPixels();
+        ErrorMetrics m = ErrorMetrics.compareDisplayed(f[0], 1, f[1]);
+        // clamped to [0, 1]: image (1, 1, 1), (0, 0, 0) against reference (1, 1, 1), (0.5, 0, 1); encoded,
+        // 1 -> 1, 0 -> 0, 0.5 -> 1.055 * 0.5^(1/2.4) - 0.055 = 0.735356...: differences 0, 0, 0, -e, 0, -1
+        double e = 1.055 * Math.pow(0.5, 1 / 2.4) - 0.055;
+        assertEquals(0.7353569830524495, e, 1e-15);
+        assertEquals(Math.sqrt((e * e + 1) / 6), m.rmse(), 1e-15);
+        assertEquals((4 + e) / 6, m.referenceMean(), 1e-15);
+        assertEquals(1, m.worst(), 1e-15, "1.055 - 0.055 is 1 to within an ulp");
+        assertEquals(1, m.worstX(), "the black pixel where the reference is 1");
+    }
+
+    @Test
     void theImageIsScaledBeforeComparing() {
         Film[] f = twoPixels();
         ErrorMetrics m = ErrorMetrics.compare(f[0], 2, f[1]);
