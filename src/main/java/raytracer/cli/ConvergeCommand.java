@@ -14,6 +14,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -99,14 +100,9 @@ final class ConvergeCommand implements Callable<Integer> {
                           + "(the display's values, clamped and sRGB-encoded, as a PNG holds them).")
     String metric = "linear";
 
-    @Option(names = "--filter", paramLabel = "NAME",
-            description = "How pixels are made from samples, for every curve and a self-rendered reference (overrides the "
-                          + "scene): box or gaussian.")
-    String filter;
-
-    @Option(names = "--filter-stddev", paramLabel = "S",
-            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian; its radius is 4 S).")
-    Double filterStddev;
+    /** The filter of every curve and of a self-rendered reference. */
+    @Mixin
+    FilterOptions filter = new FilterOptions();
 
     @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")
     Integer width;
@@ -126,6 +122,8 @@ final class ConvergeCommand implements Callable<Integer> {
 
     @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
     boolean verbose;
+
+    private static final String DISPLAYED = "the displayed values, clamped to [0, 1] and sRGB-encoded";
 
     /** --filter and --filter-stddev, checked. */
     private FilterChoice filterChoice = new FilterChoice(null, null);
@@ -185,11 +183,11 @@ final class ConvergeCommand implements Callable<Integer> {
         ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
             "slope of log error against log seconds, %s: %.2f%n", name, slope));
         // the reference's noise is known in linear units only
-        double noise = metric.equals("srgb") ? Double.NaN : ref.noiseRmse();
+        double noise = displayedMetric() ? Double.NaN : ref.noiseRmse();
         out.println("reference: " + ref.what() + ConvergeReport.noiseNote(noise, rows.get(0).error().referenceMean()));
-        if (metric.equals("srgb")) {
-            out.println("metric: the displayed values, clamped to [0, 1] and sRGB-encoded");
-            note.println("converge: metric: the displayed values, clamped to [0, 1] and sRGB-encoded");
+        if (displayedMetric()) {
+            out.println("metric: " + DISPLAYED);
+            note.println("converge: metric: " + DISPLAYED);
         }
         out.flush();
         if (csv != null) {
@@ -200,6 +198,11 @@ final class ConvergeCommand implements Callable<Integer> {
         ConvergeReport.chart(title, rows, noise).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
+    }
+
+    /** True when errors are taken on the displayed values ({@code --metric srgb}) rather than on radiance. */
+    private boolean displayedMetric() {
+        return metric.equals("srgb");
     }
 
     /** Checks the options; returns the configurations to measure. Bad values are usage errors (exit code 2). */
@@ -214,7 +217,7 @@ final class ConvergeCommand implements Callable<Integer> {
             usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
         }
         try {
-            filterChoice = FilterChoice.parse(filter, filterStddev);
+            filterChoice = filter.choice();
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -313,7 +316,7 @@ final class ConvergeCommand implements Callable<Integer> {
                 : (int) Math.max(1, Math.min(1 << 20, Math.round(budgets.get(i - counts.size()) / secondsPerSpp)));
             RenderStats stats = render(withSamples(world, n), film, seed, name + ", " + n + " spp");
             secondsPerSpp = stats.seconds() / stats.samplesPerPixel();
-            ErrorMetrics error = metric.equals("srgb") ? ErrorMetrics.compareDisplayed(film, exposure, ref)
+            ErrorMetrics error = displayedMetric() ? ErrorMetrics.compareDisplayed(film, exposure, ref)
                 : ErrorMetrics.compare(film, exposure, ref);
             rows.add(new ConvergeRow(name, stats.samplesPerPixel(), lights, stats.seconds(), error));
             note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,

@@ -54,10 +54,6 @@ final class ConvergeReference {
         return film;
     }
 
-    /**
-     * The scene's exact image, its quadrature error noted on {@code note}; empty when the scene has
-     * none, unless {@code required}, when the reader's reason is the exception.
-     */
     /** True when the scene's image has a closed form. */
     static boolean hasClosedForm(Path scene) {
         try {
@@ -68,6 +64,10 @@ final class ConvergeReference {
         }
     }
 
+    /**
+     * The scene's exact image, its quadrature error noted on {@code note}; empty when the scene has
+     * none, unless {@code required}, when the reader's reason is the exception.
+     */
     static Optional<Image> closedForm(Path scene, int width, int height, PrintWriter note, boolean required)
             throws SceneException {
         LitPlane exact;

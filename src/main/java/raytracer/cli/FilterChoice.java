@@ -20,7 +20,7 @@ record FilterChoice(String name, Double stddev) {
         if (stddev != null && name != null && !name.equals("gaussian")) {
             throw new IllegalArgumentException("--filter-stddev is for --filter gaussian, not " + name);
         }
-        if (stddev != null && !(stddev >= Gaussian.MIN_STDDEV && stddev <= Gaussian.MAX_STDDEV)) {
+        if (stddev != null && !Gaussian.allows(stddev)) {
             throw new IllegalArgumentException("--filter-stddev must be " + Gaussian.MIN_STDDEV + " to " + Gaussian.MAX_STDDEV
                                                + " pixels, got " + stddev);
         }

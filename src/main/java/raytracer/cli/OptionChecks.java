@@ -51,7 +51,7 @@ final class OptionChecks {
         ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
         DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
         Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
-        FilterChoice filter = usage(() -> FilterChoice.parse(o.filter, o.filterStddev));
+        FilterChoice filter = usage(o.filter::choice);
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
                                                       encoding);
         if (o.noCache && o.cacheDir != null) {

@@ -6,6 +6,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -43,14 +44,8 @@ public final class RenderCommand implements Callable<Integer> {
                           + "correlated-multi-jittered, hammersley or sobol.")
     String sampler;
 
-    @Option(names = "--filter", paramLabel = "NAME",
-            description = "How pixels are made from samples (overrides the scene): box (the book's: the average of the pixel's own "
-                          + "samples) or gaussian (standard deviation 0.5 pixel, radius 2: less noise, slightly softer).")
-    String filter;
-
-    @Option(names = "--filter-stddev", paramLabel = "S",
-            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian; its radius is 4 S).")
-    Double filterStddev;
+    @Mixin
+    FilterOptions filter = new FilterOptions();
 
     @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();

@@ -32,8 +32,13 @@ public final class Gaussian implements PixelFilter {
     /** Table entries per pixel of distance. */
     private final double scale;
 
+    /** True for a standard deviation from {@link #MIN_STDDEV} to {@link #MAX_STDDEV} pixels (NaN is not). */
+    public static boolean allows(double stddev) {
+        return stddev >= MIN_STDDEV && stddev <= MAX_STDDEV;
+    }
+
     public Gaussian(double stddev) {
-        if (!(stddev >= MIN_STDDEV && stddev <= MAX_STDDEV)) {
+        if (!allows(stddev)) {
             throw new IllegalArgumentException("the filter's standard deviation must be " + MIN_STDDEV + " to " + MAX_STDDEV
                                                + " pixels, got " + stddev);
         }

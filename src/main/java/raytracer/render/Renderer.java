@@ -116,8 +116,9 @@ public final class Renderer {
 
     /**
      * The tiles (x0, y0, x1, y1) of a width x height image in the order the workers take them: the
-     * row-major list permuted by bit reversal of the index (van der Corput), so that any run of
-     * successive tiles, and each half the split hands a worker, is spread over the whole image.
+     * row-major list permuted by bit reversal of the index (van der Corput), so that every aligned
+     * run of 2^k successive tiles, each half the split hands a worker among them, is spread over
+     * the whole image.
      * Why: the JIT compiles the hot loops from what the first tiles did. Taken row by row, those
      * were a strip of floor or sky, where a shadow ray never meets a triangle behind its origin;
      * compiled without that branch, the triangle test was thrown away and recompiled once the rows

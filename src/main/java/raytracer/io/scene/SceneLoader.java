@@ -219,7 +219,7 @@ public final class SceneLoader {
             throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image is for filter: gaussian, not " + name);
         }
         double stddev = image.number("filter-stddev", Gaussian.DEFAULT_STDDEV);
-        if (!(stddev >= Gaussian.MIN_STDDEV && stddev <= Gaussian.MAX_STDDEV)) {
+        if (!Gaussian.allows(stddev)) {
             throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image must be " + Gaussian.MIN_STDDEV + " to "
                                + Gaussian.MAX_STDDEV + " pixels, got " + stddev);
         }

@@ -1,0 +1,20 @@
+package raytracer.cli;
+
+import picocli.CommandLine.Option;
+
+/** The pixel-filter options that render and converge share (a picocli mixin). */
+final class FilterOptions {
+    @Option(names = "--filter", paramLabel = "NAME",
+            description = "How pixels are made from samples (overrides the scene): box (the book's: the average of the pixel's own "
+                          + "samples) or gaussian (standard deviation 0.5 pixel, radius 2: less noise, slightly softer).")
+    String filter;
+
+    @Option(names = "--filter-stddev", paramLabel = "S",
+            description = "The Gaussian filter's standard deviation in pixels, 0.2 to 2 (implies --filter gaussian; its radius is 4 S).")
+    Double filterStddev;
+
+    /** The two options checked together; IllegalArgumentException says what is wrong. */
+    FilterChoice choice() {
+        return FilterChoice.parse(filter, filterStddev);
+    }
+}
