@@ -15,18 +15,19 @@ import raytracer.math.Vector3D;
 record Basis(Point3D eye, Vector3D u, Vector3D v, Vector3D w) {
 
     /**
-     * The view volume of rays that start within {@code reach} of the eye in the image plane's
-     * directions and leave it at most {@code slopeX} sideways and {@code slopeY} up or down per
-     * unit of depth along -w: four faces q . (+-u + slopeX w) &lt;= reach and
-     * q . (+-v + slopeY w) &lt;= reach for q = p - eye, and the plane of the eye, q . w &lt;= 0.
-     * A pinhole has reach 0; an orthographic camera has slope 0 and one reach per axis.
+     * The view volume of rays that at depth z in front of the eye (along -w) lie between
+     * {@code x0 + z sx0} and {@code x1 + z sx1} along u and between {@code y0 + z sy0} and
+     * {@code y1 + z sy1} along v: for q = p - eye and z = -q . w, the four faces
+     * q . (u + sx1 w) &lt;= x1, q . (-u - sx0 w) &lt;= -x0, q . (v + sy1 w) &lt;= y1,
+     * q . (-v - sy0 w) &lt;= -y0, and the plane of the eye, q . w &lt;= 0. A pinhole's window has
+     * offsets 0 and the window's slopes; an orthographic camera's has slopes 0.
      */
-    List<HalfSpace> viewVolume(double reachX, double reachY, double slopeX, double slopeY) {
+    List<HalfSpace> viewVolume(double x0, double x1, double sx0, double sx1, double y0, double y1, double sy0, double sy1) {
         List<HalfSpace> faces = new ArrayList<>();
-        for (int sign = -1; sign <= 1; sign += 2) {
-            faces.add(face(u.scale(sign).add(w.scale(slopeX)), reachX));
-            faces.add(face(v.scale(sign).add(w.scale(slopeY)), reachY));
-        }
+        faces.add(face(u.add(w.scale(sx1)), x1));
+        faces.add(face(u.scale(-1).add(w.scale(-sx0)), -x0));
+        faces.add(face(v.add(w.scale(sy1)), y1));
+        faces.add(face(v.scale(-1).add(w.scale(-sy0)), -y0));
         faces.add(face(w, 0));
         return faces;
     }

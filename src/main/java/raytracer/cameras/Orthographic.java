@@ -38,11 +38,11 @@ public final class Orthographic implements Camera {
                 eye.z() + xs * u.z() + ys * v.z(), -w.x(), -w.y(), -w.z());
     }
 
-    /** The box of parallel rays behind the window: the window's half-width and half-height, no slope. */
+    /** The box of parallel rays behind the window: its edges' offsets, no slope. */
     @Override
-    public List<HalfSpace> viewVolume(ViewPlane vp) {
-        double aspect = (double) vp.hres() / vp.vres();
-        return basis.viewVolume(halfHeight * aspect, halfHeight, 0, 0);
+    public List<HalfSpace> viewVolume(ViewPlane vp, double x0, double y0, double x1, double y1) {
+        Window window = Window.of(vp, halfHeight, x0, y0, x1, y1);
+        return basis.viewVolume(window.left(), window.right(), 0, 0, window.bottom(), window.top(), 0, 0);
     }
 
     @Override

@@ -41,11 +41,11 @@ public final class Pinhole implements Camera {
         out.set(eye.x(), eye.y(), eye.z(), dx * inv, dy * inv, dz * inv);
     }
 
-    /** The frustum through the image's edges: slopes tan(fov / 2) times the aspect ratio sideways, tan(fov / 2) up and down. */
+    /** The frustum from the eye through the window's edges, their slopes computed as {@link #generateRay} computes a ray's. */
     @Override
-    public List<HalfSpace> viewVolume(ViewPlane vp) {
-        double aspect = (double) vp.hres() / vp.vres();
-        return basis.viewVolume(0, 0, halfHeight * aspect, halfHeight);
+    public List<HalfSpace> viewVolume(ViewPlane vp, double x0, double y0, double x1, double y1) {
+        Window window = Window.of(vp, halfHeight, x0, y0, x1, y1);
+        return basis.viewVolume(0, 0, window.left(), window.right(), 0, 0, window.bottom(), window.top());
     }
 
     @Override

@@ -64,14 +64,16 @@ public final class ThinLens implements Camera {
 
     /**
      * Every ray starts within the lens radius R of the eye and passes the focal plane within the
-     * frame's half-size there; at depth z its sideways offset is at most R |1 - z / f| + z a
-     * &lt;= R + z (a + R / f) (a the frame's slope), which bounds the volume by planes.
+     * window there; at depth z its sideways offset is at most R |1 - z / f| + z a
+     * &lt;= R + z (a + R / f) (a the slope of the window's edge), and at least -R + z (a' - R / f)
+     * on the other side, which bounds the volume by planes.
      */
     @Override
-    public List<HalfSpace> viewVolume(ViewPlane vp) {
-        double aspect = (double) vp.hres() / vp.vres();
+    public List<HalfSpace> viewVolume(ViewPlane vp, double x0, double y0, double x1, double y1) {
+        Window window = Window.of(vp, halfHeight, x0, y0, x1, y1);
         double spread = lensRadius / focalDistance;
-        return basis.viewVolume(lensRadius, lensRadius, halfHeight * aspect + spread, halfHeight + spread);
+        return basis.viewVolume(-lensRadius, lensRadius, window.left() - spread, window.right() + spread,
+                                -lensRadius, lensRadius, window.bottom() - spread, window.top() + spread);
     }
 
     @Override

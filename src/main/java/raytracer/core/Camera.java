@@ -26,6 +26,14 @@ public interface Camera {
      * empty list when the camera cannot tell, and then nothing is left out for being unseen.
      */
     default List<HalfSpace> viewVolume(ViewPlane vp) {
+        return viewVolume(vp, 0, 0, vp.hres(), vp.vres());
+    }
+
+    /**
+     * As {@link #viewVolume(ViewPlane)}, for the primary rays through the image window
+     * [x0, x1] x [y0, y1] (in pixels from the top-left corner) alone: the renderer's tiles.
+     */
+    default List<HalfSpace> viewVolume(ViewPlane vp, double x0, double y0, double x1, double y1) {
         return List.of();
     }
 

@@ -20,13 +20,15 @@ public final class Skipped {
     public static final int LIGHT_SAMPLES = 5;
     /** Hits whose u, v were not computed (a sphere's or cylinder's inverse trigonometry), as no texture reads them. */
     public static final int TEXTURE_COORDINATES = 6;
+    /** Camera rays' tests of objects that their tile's view volume excludes, not made. */
+    public static final int OBJECT_TESTS = 7;
     /** How many kinds there are. */
-    public static final int KINDS = 7;
+    public static final int KINDS = 8;
     /** A decision whose saving is not counted while rendering (memory, a build, a lookup). */
     public static final int UNCOUNTED = -1;
 
     private static final String[] NAMES = {"shadow rays", "secondary rays", "ambient terms", "diffuse terms",
-        "specular lobes", "light samples", "texture coordinates"};
+        "specular lobes", "light samples", "texture coordinates", "object tests"};
 
     private Skipped() {
     }

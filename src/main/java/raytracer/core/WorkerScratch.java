@@ -27,6 +27,12 @@ public final class WorkerScratch {
     /** Where in its pixel each of those rays' samples lies, for a filter wider than the pixel. */
     public final double[] pixelU = new double[CAMERA_RAYS];
     public final double[] pixelV = new double[CAMERA_RAYS];
+    /**
+     * The objects that the camera rays of the tile being rendered can hit, in the order
+     * {@link World#hit} searches them, or null for all: set by the renderer per tile when the
+     * world {@linkplain World#searchesByTile searches by tile}.
+     */
+    public GeometricObject[] cameraRayObjects;
     /** BVH traversal state: the subtrees still to visit and the slab-test constants of each traversal in progress. */
     public final TraversalStack traversals = new TraversalStack();
     /** The watertight triangle test's constants for the ray whose triangles are being tested. */

@@ -30,6 +30,7 @@ public final class World {
     private GeometricObject[] shadowCasters = new GeometricObject[0];
     private Light[] lights = new Light[0];
     private boolean textureCoordinates = true;
+    private boolean searchByTile;
 
     public World(ViewPlane viewPlane, Camera camera, Light ambient) {
         this.viewPlane = viewPlane;
@@ -101,6 +102,19 @@ public final class World {
         textureCoordinates = false;
     }
 
+    /**
+     * Lets camera rays search only the objects that their tile's view volume holds, once the
+     * analysis found that the camera can bound it ({@link Camera#viewVolume(ViewPlane, double, double, double, double)}).
+     */
+    public void searchByTile() {
+        searchByTile = true;
+    }
+
+    /** Whether the renderer gives each tile's camera rays the objects they can hit ({@link WorkerScratch#cameraRayObjects}). */
+    public boolean searchesByTile() {
+        return searchByTile;
+    }
+
     /** Whether shapes must give their hits' u, v: true unless {@link #leaveOutTextureCoordinates} was called. */
     public boolean needsTextureCoordinates() {
         return textureCoordinates;
@@ -108,11 +122,18 @@ public final class World {
 
     /**
      * Finds the closest hit along {@code ray} and completes {@code sr} for it (Suffern's
-     * hit_objects, two-phase).
+     * hit_objects, two-phase). A camera ray (depth 0) of a tile searches only the objects its
+     * tile can see, when the renderer named them: the others lie wholly outside the volume that
+     * holds every camera ray of the tile, so their tests could only miss.
      */
     public boolean hit(Ray ray, ShadeRec sr) {
         sr.beginSearch(ray, sr.depth, Double.POSITIVE_INFINITY);
-        for (GeometricObject object : objects) {
+        GeometricObject[] searched = objects;
+        if (sr.depth == 0 && sr.scratch.cameraRayObjects != null) {
+            searched = sr.scratch.cameraRayObjects;
+            sr.scratch.skipped[Skipped.OBJECT_TESTS] += objects.length - searched.length;
+        }
+        for (GeometricObject object : searched) {
             object.hit(ray, sr);
         }
         if (!sr.hitAnObject()) {

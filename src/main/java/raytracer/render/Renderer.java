@@ -7,6 +7,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.atomic.AtomicLong;
 import raytracer.core.Camera;
+import raytracer.core.GeometricObject;
 import raytracer.core.PixelFilter;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreeSettings;
@@ -89,7 +90,8 @@ public final class Renderer {
         checkFilter(filter);
         FilteredTile[] filtered = filter.isBox() ? null : new FilteredTile[tiles.size()];
         long start = System.nanoTime();
-        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered));
+        GeometricObject[][] tileObjects = TileObjects.of(world, tiles);
+        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered, tileObjects));
         if (filtered != null) {
             resolve(filtered, film, filter.reach());
         }
@@ -221,26 +223,31 @@ public final class Renderer {
         private final transient ThreadLocal<WorkerScratch> scratch;
         /** Per tile, its filtered sums; null for the box filter, whose pixels go straight to the film. */
         private final transient FilteredTile[] filtered;
+        /** Per tile, the objects its camera rays can hit ({@link TileObjects}); null when not searched by tile. */
+        private final transient GeometricObject[][] tileObjects;
 
-        TileRange(List<int[]> tiles, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch, FilteredTile[] filtered) {
+        TileRange(List<int[]> tiles, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch, FilteredTile[] filtered,
+                  GeometricObject[][] tileObjects) {
             this.tiles = tiles;
             this.from = from;
             this.to = to;
             this.film = film;
             this.scratch = scratch;
             this.filtered = filtered;
+            this.tileObjects = tileObjects;
         }
 
         @Override
         protected void compute() {
             if (to - from > 1) {
                 int mid = (from + to) >>> 1;
-                invokeAll(new TileRange(tiles, from, mid, film, scratch, filtered),
-                          new TileRange(tiles, mid, to, film, scratch, filtered));
+                invokeAll(new TileRange(tiles, from, mid, film, scratch, filtered, tileObjects),
+                          new TileRange(tiles, mid, to, film, scratch, filtered, tileObjects));
                 return;
             }
             int[] tile = tiles.get(from);
             WorkerScratch s = scratch.get();
+            s.cameraRayObjects = tileObjects == null ? null : tileObjects[from];
             FilteredTile sums = null;
             if (filtered != null) {
                 sums = new FilteredTile(world.viewPlane().filter(), tile[0], tile[1], tile[2], tile[3]);

@@ -47,6 +47,7 @@ public final class SceneAnalysis {
         analysis.unreachableObjects();
         analysis.shadowRays();
         analysis.textureCoordinates();
+        analysis.searchByTile();
         return analysis;
     }
 
@@ -197,6 +198,22 @@ public final class SceneAnalysis {
             world.leaveOutTextureCoordinates();
             skips.add(new Skip(Skipped.TEXTURE_COORDINATES, "u, v of hits not computed", "no texture reads them"));
         }
+    }
+
+    /**
+     * Camera rays search only the objects their tile can see, when the camera can bound the rays
+     * of a part of its image and some object is bounded (an unbounded one, a plane, is in every
+     * tile's view). The tiles' lists are the renderer's ({@link TileObjects}).
+     */
+    private void searchByTile() {
+        Camera camera = world.camera();
+        if (camera.viewVolume(world.viewPlane()).isEmpty()
+            || world.objects().size() < 2 || world.objects().stream().noneMatch(o -> o.boundingBox().isBounded())) {
+            return;
+        }
+        world.searchByTile();
+        skips.add(new Skip(Skipped.OBJECT_TESTS, "camera rays test only the objects their tile can see",
+                           "an object wholly outside the view volume of a tile's camera rays cannot be hit by them"));
     }
 
     /** True unless the camera's rays start outside the object's box and no material refracts. */

@@ -284,4 +284,28 @@ class SceneAnalysisTest {
         assertFalse(checker.decided("u, v"), checker.list());
         assertEquals(0, checker.with().skipped(Skipped.TEXTURE_COORDINATES));
     }
+    // ---- objects a tile's camera rays cannot hit ----
+
+    @Test
+    void cameraRaysTestOnlyTheObjectsTheirTileSees() throws IOException, SceneException {
+        // 160 x 96 pixels, 5 x 3 tiles; small spheres in three corners and the middle, over a floor
+        String scene = "image: {width: 160, height: 96, samples: 2}\n"
+                       + "camera: {%s, eye: [0, 2, 8], look-at: [0, 0.5, 0]}\n"
+                       + "lights:\n  - {type: point, position: [1, 4, 2], intensity: 30}\n"
+                       + "objects:\n  - {type: plane, normal: [0, 1, 0]}\n"
+                       + "  - {type: sphere, center: [-2.6, 1.9, 0], radius: 0.3}\n"
+                       + "  - {type: sphere, center: [2.6, 1.9, 0], radius: 0.3}\n"
+                       + "  - {type: sphere, center: [-2.6, 0.3, 1], radius: 0.3}\n"
+                       + "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5}\n";
+        for (String camera : new String[] {"fov: 40", "type: thin-lens, fov: 40, lens-radius: 0.05, focal-distance: 8",
+                                           "type: orthographic, view-height: 4"}) {
+            Outcome o = both(scene.formatted(camera));
+            assertTrue(o.decided("camera rays test only the objects their tile can see"), o.list());
+            long tests = 5 * o.with().primaryRays();
+            long skipped = o.with().skipped(Skipped.OBJECT_TESTS);
+            // each corner sphere lies in one or two of the 15 tiles, the middle one in a few
+            assertTrue(skipped > tests / 2 && skipped < tests, camera + ": " + skipped + " of " + tests + " tests skipped");
+            assertEquals(0, o.without().skipped(Skipped.OBJECT_TESTS), "not skipped when not decided");
+        }
+    }
 }
