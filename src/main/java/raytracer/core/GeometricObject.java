@@ -3,6 +3,7 @@ package raytracer.core;
 import java.util.List;
 import java.util.Locale;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 
 /**
@@ -102,6 +103,16 @@ public abstract class GeometricObject {
      */
     public boolean isClosed() {
         return false;
+    }
+
+    /**
+     * The plane this object is, when it is a whole plane that every ray crossing it hits (an
+     * unbounded surface with no hole), as the half-space n . p &lt;= d on one of its sides; null for
+     * anything else. For the scene analysis: what lies beyond such a plane cannot be seen or light
+     * what is seen, unless its material lets rays through.
+     */
+    public HalfSpace wholePlane() {
+        return null;
     }
 
     /** What the object is, for messages ("sphere", "mesh dragon.obj"). */

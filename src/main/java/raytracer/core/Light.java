@@ -138,6 +138,16 @@ public abstract class Light {
         return false;
     }
 
+    /**
+     * True when the whole light lies strictly outside {@code h}, past its plane by
+     * {@link HalfSpace#excludes}'s margin, so that a shadow ray towards it from a point of
+     * {@code h} crosses that plane before it arrives (for a directional light: its direction leads
+     * out of {@code h} by more than that margin). Lights that cannot tell say false.
+     */
+    public boolean liesBeyond(HalfSpace h) {
+        return false;
+    }
+
     /** What the light is, for messages ("point light"). */
     public String description() {
         return getClass().getSimpleName();

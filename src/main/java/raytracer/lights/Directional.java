@@ -39,6 +39,17 @@ public final class Directional extends Light {
         return h.nx() * towardLight.x() + h.ny() * towardLight.y() + h.nz() * towardLight.z() <= 0;
     }
 
+    /**
+     * A shadow ray from a point of h along the light's direction crosses h's plane at a finite
+     * distance when the direction leads out by more than the margin: at most |n . q - d| / (n . l),
+     * and the scene's extent (below 1e150) over 2^-30 stays far below the largest double.
+     */
+    @Override
+    public boolean liesBeyond(HalfSpace h) {
+        double out = h.nx() * towardLight.x() + h.ny() * towardLight.y() + h.nz() * towardLight.z();
+        return out > HalfSpace.MARGIN * (Math.abs(h.nx()) + Math.abs(h.ny()) + Math.abs(h.nz()));
+    }
+
     @Override
     public String description() {
         return "directional light";

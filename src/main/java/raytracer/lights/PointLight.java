@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.core.Light;
 import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
 import raytracer.math.HalfSpace;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
@@ -41,6 +42,11 @@ public final class PointLight extends Light {
     @Override
     public boolean keepsShadowRaysWithin(HalfSpace h) {
         return h.contains(px, py, pz);
+    }
+
+    @Override
+    public boolean liesBeyond(HalfSpace h) {
+        return h.excludes(new BBox(px, py, pz, px, py, pz));
     }
 
     @Override

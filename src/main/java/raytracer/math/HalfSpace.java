@@ -26,6 +26,11 @@ public record HalfSpace(double nx, double ny, double nz, double d) {
         return new HalfSpace(nx, ny, nz, nx * px + ny * py + nz * pz);
     }
 
+    /** The other side: the closed half-space n . p &gt;= d, as -n . p &lt;= -d. */
+    public HalfSpace flipped() {
+        return new HalfSpace(-nx, -ny, -nz, -d);
+    }
+
     /** True when the point lies in the closed half-space (on its plane counts). */
     public boolean contains(double x, double y, double z) {
         return nx * x + ny * y + nz * z <= d;

@@ -42,6 +42,7 @@ public final class SceneAnalysis {
     public static SceneAnalysis apply(World world, RayTreeSettings rayTree) {
         SceneAnalysis analysis = new SceneAnalysis(world, rayTree);
         analysis.lightsThatEmitNothing();
+        analysis.lightsBehindAPlane();
         analysis.zeroTerms();
         analysis.recursion();
         analysis.unreachableObjects();
@@ -72,6 +73,43 @@ public final class SceneAnalysis {
             } else if (light.castsShadows()) {
                 light.leaveOutShadowRays();
                 skips.add(new Skip(Skipped.SHADOW_RAYS, "no shadow rays towards " + name(light), "it emits nothing"));
+            }
+        }
+    }
+
+    /**
+     * A light wholly beyond an opaque plane that casts shadows, with the camera's rays and every
+     * other object strictly on the near side, lights nothing that can be seen: no ray crosses the
+     * plane (it is whole, and its material lets none through), so every hit is on the near side;
+     * a shadow ray from a hit on another object crosses the plane before it reaches the light, and
+     * a hit on the plane itself has its normal turned to the ray, to the near side, away from the
+     * light. Each of its samples would add nothing, so it is left out. An object touching the
+     * plane keeps the light: its points within rounding of the plane could be lit from beyond. A
+     * light that draws samples (an area light) is kept too, as one that emits nothing is.
+     */
+    private void lightsBehindAPlane() {
+        BBox origins = world.camera().rayOrigins(world.viewPlane());
+        if (origins == null) {
+            return;
+        }
+        List<GeometricObject> objects = world.objects();
+        for (GeometricObject wall : objects) {
+            HalfSpace side = wall.wholePlane();
+            if (side == null || !wall.castsShadows() || wall.materials().stream().anyMatch(Material::needsRefraction)) {
+                continue;
+            }
+            for (HalfSpace near : List.of(side, side.flipped())) {
+                HalfSpace far = near.flipped();
+                if (!far.excludes(origins) || !objects.stream().allMatch(o -> o == wall || far.excludes(o.boundingBox()))) {
+                    continue;
+                }
+                for (Light light : world.lightList()) {
+                    if (light.castsShadows() && !light.drawsSamples() && light.liesBeyond(near)) {
+                        world.leaveOut(light);
+                        skips.add(new Skip(Skipped.UNCOUNTED, name(light) + " left out",
+                                           "it lies behind the " + wall.description() + ", and the camera and every other object in front"));
+                    }
+                }
             }
         }
     }

@@ -3,6 +3,7 @@ package raytracer.shapes;
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
@@ -35,6 +36,11 @@ public final class Plane extends GeometricObject {
         Vector3D helper = Math.abs(nx) > 0.9 ? new Vector3D(0, 1, 0) : new Vector3D(1, 0, 0);
         e1 = helper.cross(n).normalize();
         e2 = n.cross(e1);
+    }
+
+    @Override
+    public HalfSpace wholePlane() {
+        return HalfSpace.through(ax, ay, az, nx, ny, nz);
     }
 
     private double distance(Ray ray) {

@@ -227,6 +227,39 @@ class SceneAnalysisTest {
         assertEquals(2, o.analysed().lights().length);
     }
 
+    @Test
+    void lightsBehindAnOpaqueFloorAreLeftOut() throws IOException, SceneException {
+        String scene = VIEW + "materials:\n  glass: {type: dielectric, ior: 1.5}\n"
+                       + "lights:\n  - {type: point, position: [1, 4, 2], intensity: 30}\n"
+                       + "  - {type: point, position: [0.5, -0.01, 0.5], intensity: 30}\n"
+                       + "  - {type: directional, direction: [0.3, -1, 0.2], radiance: 0.5}\n"
+                       + "  - {type: directional, direction: [1, 0.0001, 0], radiance: 0.5}\n"
+                       + "objects:\n  - {type: plane, normal: [0, 1, 0]%s}\n  - {type: sphere, center: [0, 1.1, 0], radius: 1}\n%s";
+        Outcome below = both(scene.formatted("", ""));
+        assertTrue(below.decided("light 2 (point light) left out"), below.list());
+        assertTrue(below.decided("light 3 (directional light) left out"), below.list());
+        assertFalse(below.decided("light 4"), below.list());
+        assertEquals(2, below.analysed().lights().length);
+        // the floor's normal the other way round: the same plane, the same decision
+        assertTrue(both(scene.formatted("", "").replace("normal: [0, 1, 0]", "normal: [0, -1, 0]"))
+                       .decided("light 2 (point light) left out"));
+        // a floor of glass lets light through; one that casts no shadow does not stop it
+        Outcome glass = both(scene.formatted(", material: glass", ""));
+        assertFalse(glass.decided("left out"), glass.list());
+        Outcome noShadow = both(scene.formatted(", casts-shadows: false", ""));
+        assertFalse(noShadow.decided("left out"), noShadow.list());
+        // an object below the floor may be lit from below, and seen through nothing: kept anyway
+        Outcome under = both(scene.formatted("", "  - {type: sphere, center: [3, -2, 0], radius: 0.5}\n"));
+        assertFalse(under.decided("point light) left out"), under.list());
+        // a sphere that touches the floor: its lowest points, within rounding of the plane, could be lit from below
+        Outcome touching = both(scene.formatted("", "").replace("center: [0, 1.1, 0]", "center: [0, 1, 0]"));
+        assertFalse(touching.decided("left out"), touching.list());
+        // a light without shadows lights the sphere through the floor
+        Outcome unshadowed = both(scene.formatted("", "").replace("position: [0.5, -0.01, 0.5], intensity: 30}",
+                                                                  "position: [0.5, -0.01, 0.5], intensity: 30, shadows: false}"));
+        assertFalse(unshadowed.decided("light 2"), unshadowed.list());
+    }
+
     // ---- objects no ray reaches ----
 
     @Test
