@@ -1,7 +1,10 @@
 package raytracer.accel;
 
+import java.util.List;
 import raytracer.core.ShadeRec;
 import raytracer.core.TraversalStack;
+import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 import raytracer.math.SlabRay;
 
@@ -21,6 +24,15 @@ public final class FlatBVH {
     final float[] rootBox;
     final int rootLink;
     final int rootCount;
+    /** The whole tree, where every search starts unless told otherwise. */
+    final Start root;
+
+    /**
+     * Where a search starts: a subtree, given by its link and count as a node stores a child, and
+     * its box, the floats {@code box[at .. at + 6)}.
+     */
+    record Start(float[] box, int at, int link, int count) {
+    }
 
     FlatBVH(BvhNodes nodes, int[] order, float[] rootBox, int rootLink, int rootCount) {
         this.nodes = nodes;
@@ -28,6 +40,45 @@ public final class FlatBVH {
         this.rootBox = rootBox;
         this.rootLink = rootLink;
         this.rootCount = rootCount;
+        this.root = new Start(rootBox, 0, rootLink, rootCount);
+    }
+
+    /**
+     * The subtree where the search of a ray that stays in {@code volume} may start, or null when
+     * no such ray can reach a leaf: from the root down, as long as the volume wholly excludes one
+     * child's box ({@link HalfSpace#excludes}, a margin far above the slab test's rounding). Such
+     * a ray misses the excluded box, so from the root it would have tested both boxes of every
+     * node above the subtree, stacked nothing, and gone on into the subtree: starting there, it
+     * tests the subtree's box, as it did from its parent, and then visits the same nodes in the
+     * same order, with the same hits. (Reshetov, Soupikov and Hurley's entry points for the rays
+     * of a frustum, "Multi-level ray tracing algorithm", SIGGRAPH 2005, made exact.)
+     */
+    Start startFor(List<HalfSpace> volume) {
+        if (excluded(rootBox, 0, volume)) {
+            return null;
+        }
+        Start start = root;
+        while (start.count() == 0) {
+            int node = start.link();
+            boolean left = !excluded(nodes.bounds, BvhNodes.boxAt(node, BvhNodes.LEFT), volume);
+            boolean right = !excluded(nodes.bounds, BvhNodes.boxAt(node, BvhNodes.RIGHT), volume);
+            if (left == right) {
+                return left ? start : null;
+            }
+            int side = left ? BvhNodes.LEFT : BvhNodes.RIGHT;
+            start = new Start(nodes.bounds, BvhNodes.boxAt(node, side), nodes.link(node, side), nodes.primitiveCount(node, side));
+        }
+        return start;
+    }
+
+    private static boolean excluded(float[] box, int at, List<HalfSpace> volume) {
+        BBox b = new BBox(box[at], box[at + 1], box[at + 2], box[at + 3], box[at + 4], box[at + 5]);
+        for (HalfSpace face : volume) {
+            if (face.excludes(b)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** All nodes, leaves included (a binary tree has one leaf more than interior nodes). */
@@ -60,12 +111,17 @@ public final class FlatBVH {
 
     /** Finds the closest hit before {@code sr.t} among the leaves, recording it in {@code sr}. */
     boolean closestHit(Ray ray, ShadeRec sr, Leaves leaves) {
-        return search(ray, sr.t, sr, leaves, true);
+        return search(root, ray, sr.t, sr, leaves, true);
+    }
+
+    /** As {@link #closestHit(Ray, ShadeRec, Leaves)}, searching from {@code start} ({@link #startFor}). */
+    boolean closestHit(Start start, Ray ray, ShadeRec sr, Leaves leaves) {
+        return search(start, ray, sr.t, sr, leaves, true);
     }
 
     /** True when some leaf blocks the ray on (0, tMax): for shadow rays, which stop at the first blocker. */
     boolean anyHit(Ray ray, double tMax, ShadeRec sr, Leaves leaves) {
-        return search(ray, tMax, sr, leaves, false);
+        return search(root, ray, tMax, sr, leaves, false);
     }
 
     /**
@@ -76,7 +132,7 @@ public final class FlatBVH {
      * beyond a hit found since; for any hit the order does not matter, and the first leaf that
      * blocks the ray ends the search.
      */
-    private boolean search(Ray ray, double tMax, ShadeRec sr, Leaves leaves, boolean closest) {
+    private boolean search(Start start, Ray ray, double tMax, ShadeRec sr, Leaves leaves, boolean closest) {
         TraversalStack.Frame stack = sr.scratch.traversals.push(ray);
         SlabRay slab = stack.ray;
         int[] stackLinks = stack.links;
@@ -88,11 +144,11 @@ public final class FlatBVH {
         boolean found = false;
         long boxTests = 1;
         int top = 0;
-        double tRoot = slab.entry(rootBox, 0, tMax);
-        if (tRoot < tMax) {
-            stackLinks[0] = rootLink;
-            stackCounts[0] = rootCount;
-            stackEntries[0] = tRoot;
+        double tStart = slab.entry(start.box(), start.at(), tMax);
+        if (tStart < tMax) {
+            stackLinks[0] = start.link();
+            stackCounts[0] = start.count();
+            stackEntries[0] = tStart;
             top = 1;
         }
         while (top > 0) {

@@ -8,6 +8,7 @@ import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 import raytracer.math.ShearedRay;
 import raytracer.shapes.mesh.Mesh;
@@ -21,7 +22,7 @@ import raytracer.shapes.mesh.TriangleMesh;
  * are one run of its index array and their vertices lie together, so a leaf is read from a few
  * places in memory rather than from all over the mesh.
  */
-public final class MeshBVH extends GeometricObject implements Leaves {
+public final class MeshBVH extends GeometricObject implements Leaves, StartedSearch {
     private final TriangleMesh mesh;
     private final FlatBVH bvh;
     /** The per-face materials, as given: what hits on this mesh may be shaded with besides its own. */
@@ -103,6 +104,19 @@ public final class MeshBVH extends GeometricObject implements Leaves {
     public boolean hit(Ray ray, ShadeRec sr) {
         sr.scratch.shearedRay.load(ray);
         return bvh.closestHit(ray, sr, this);
+    }
+
+    /** Itself, or a view whose searches start in the subtree that holds what rays in {@code volume} can reach ({@link FlatBVH#startFor}). */
+    @Override
+    public GeometricObject within(List<HalfSpace> volume) {
+        FlatBVH.Start start = bvh.startFor(volume);
+        return start == null ? null : start == bvh.root ? this : new SubtreeSearch(this, start);
+    }
+
+    @Override
+    public boolean hit(FlatBVH.Start start, Ray ray, ShadeRec sr) {
+        sr.scratch.shearedRay.load(ray);
+        return bvh.closestHit(start, ray, sr, this);
     }
 
     @Override

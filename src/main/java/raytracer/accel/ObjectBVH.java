@@ -4,13 +4,14 @@ import java.util.List;
 import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 
 /**
  * A BVH over ordinary bounded objects (spheres, instances, meshes): the objects' own {@code hit}
  * methods record the closest hit, so completion goes straight to the leaf that won.
  */
-public final class ObjectBVH extends GeometricObject implements Leaves {
+public final class ObjectBVH extends GeometricObject implements Leaves, StartedSearch {
     private final GeometricObject[] objects;
     private final boolean[] castsShadows;
     private final FlatBVH bvh;
@@ -48,6 +49,18 @@ public final class ObjectBVH extends GeometricObject implements Leaves {
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
         return bvh.closestHit(ray, sr, this);
+    }
+
+    /** Itself, or a view whose searches start in the subtree that holds what rays in {@code volume} can reach ({@link FlatBVH#startFor}). */
+    @Override
+    public GeometricObject within(List<HalfSpace> volume) {
+        FlatBVH.Start start = bvh.startFor(volume);
+        return start == null ? null : start == bvh.root ? this : new SubtreeSearch(this, start);
+    }
+
+    @Override
+    public boolean hit(FlatBVH.Start start, Ray ray, ShadeRec sr) {
+        return bvh.closestHit(start, ray, sr, this);
     }
 
     @Override

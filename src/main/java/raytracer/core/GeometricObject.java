@@ -106,6 +106,22 @@ public abstract class GeometricObject {
     }
 
     /**
+     * This object as rays that stay in {@code volume} (the half-spaces of a tile's camera rays) can
+     * hit it: null when none can (the volume wholly excludes its box), else the object itself, or
+     * an aggregate's view of it that searches only what such rays can reach. A hit on the view is
+     * recorded as the aggregate's, or its leaf's, as before.
+     */
+    public GeometricObject within(List<HalfSpace> volume) {
+        BBox box = boundingBox();
+        for (HalfSpace face : volume) {
+            if (face.excludes(box)) {
+                return null;
+            }
+        }
+        return this;
+    }
+
+    /**
      * The plane this object is, when it is a whole plane that every ray crossing it hits (an
      * unbounded surface with no hole), as the half-space n . p &lt;= d on one of its sides; null for
      * anything else. For the scene analysis: what lies beyond such a plane cannot be seen or light

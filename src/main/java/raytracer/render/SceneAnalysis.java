@@ -239,19 +239,19 @@ public final class SceneAnalysis {
     }
 
     /**
-     * Camera rays search only the objects their tile can see, when the camera can bound the rays
-     * of a part of its image and some object is bounded (an unbounded one, a plane, is in every
-     * tile's view). The tiles' lists are the renderer's ({@link TileObjects}).
+     * Camera rays search only the objects, and the parts of a BVH, that their tile can see, when
+     * the camera can bound the rays of a part of its image and some object is bounded (an
+     * unbounded one, a plane, is in every tile's view). The tiles' lists are the renderer's
+     * ({@link TileObjects}); the parts of a BVH left out show as fewer box tests per ray.
      */
     private void searchByTile() {
         Camera camera = world.camera();
-        if (camera.viewVolume(world.viewPlane()).isEmpty()
-            || world.objects().size() < 2 || world.objects().stream().noneMatch(o -> o.boundingBox().isBounded())) {
+        if (camera.viewVolume(world.viewPlane()).isEmpty() || world.objects().stream().noneMatch(o -> o.boundingBox().isBounded())) {
             return;
         }
         world.searchByTile();
-        skips.add(new Skip(Skipped.OBJECT_TESTS, "camera rays test only the objects their tile can see",
-                           "an object wholly outside the view volume of a tile's camera rays cannot be hit by them"));
+        skips.add(new Skip(Skipped.OBJECT_TESTS, "camera rays test only the objects, and the parts of a BVH, that their tile can see",
+                           "what lies wholly outside the view volume of a tile's camera rays cannot be hit by them"));
     }
 
     /** True unless the camera's rays start outside the object's box and no material refracts. */

@@ -333,7 +333,7 @@ class SceneAnalysisTest {
         for (String camera : new String[] {"fov: 40", "type: thin-lens, fov: 40, lens-radius: 0.05, focal-distance: 8",
                                            "type: orthographic, view-height: 4"}) {
             Outcome o = both(scene.formatted(camera));
-            assertTrue(o.decided("camera rays test only the objects their tile can see"), o.list());
+            assertTrue(o.decided("camera rays test only the objects, and the parts of a BVH, that their tile can see"), o.list());
             long tests = 5 * o.with().primaryRays();
             long skipped = o.with().skipped(Skipped.OBJECT_TESTS);
             // each corner sphere lies in one or two of the 15 tiles, the middle one in a few
