@@ -43,7 +43,8 @@ record Basis(Point3D eye, Vector3D u, Vector3D v, Vector3D w) {
 
     /** n . (p - eye) &lt;= reach. */
     private HalfSpace face(Vector3D n, double reach) {
-        return new HalfSpace(n.x(), n.y(), n.z(), reach + n.x() * eye.x() + n.y() * eye.y() + n.z() * eye.z());
+        return new HalfSpace(n.x(), n.y(), n.z(), reach + n.x() * eye.x() + n.y() * eye.y() + n.z() * eye.z(),
+                             Math.max(Math.abs(eye.x()), Math.max(Math.abs(eye.y()), Math.abs(eye.z()))));
     }
 
     static Basis lookAt(Point3D eye, Point3D lookAt, Vector3D up) {

@@ -140,9 +140,11 @@ public abstract class Light {
 
     /**
      * True when the whole light lies strictly outside {@code h}, past its plane by
-     * {@link HalfSpace#excludes}'s margin, so that a shadow ray towards it from a point of
-     * {@code h} crosses that plane before it arrives (for a directional light: its direction leads
-     * out of {@code h} by more than that margin). Lights that cannot tell say false.
+     * {@link HalfSpace#excludes}'s margin (relative to h's size, which the caller sets to the
+     * scene's), so that a shadow ray towards it from a point of {@code h} crosses that plane
+     * before it arrives, and a hit on the plane, its normal turned into {@code h}, finds the light
+     * behind it (for a directional light: its direction leads out of {@code h} by more than that
+     * margin). Lights that cannot tell say false.
      */
     public boolean liesBeyond(HalfSpace h) {
         return false;

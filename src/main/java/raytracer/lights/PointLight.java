@@ -44,9 +44,14 @@ public final class PointLight extends Light {
         return h.contains(px, py, pz);
     }
 
+    /**
+     * Only for a plane perpendicular to an axis: a hit on a tilted plane far from the light is off
+     * the plane by rounding that grows with its distance, and may come out on the light's side,
+     * where one on an axis-aligned plane is projected onto the plane's coordinate (PlanarHit).
+     */
     @Override
     public boolean liesBeyond(HalfSpace h) {
-        return h.excludes(new BBox(px, py, pz, px, py, pz));
+        return h.isAxisAligned() && h.excludes(new BBox(px, py, pz, px, py, pz));
     }
 
     @Override

@@ -18,10 +18,11 @@ import raytracer.math.HalfSpace;
 /**
  * Decides, once the scene is loaded and the command line has changed it, what work its render can
  * leave out without changing one bit of the image, and leaves it out before {@link World#prepare}:
- * lights that emit nothing, terms of materials that are zero at every hit, recursion no material
- * uses, objects no ray can reach (a mesh so left out is never built), shadow rays no object can
- * block, texture coordinates no texture reads. Every decision is a proof, not a guess: where the proof needs something the objects
- * cannot tell, nothing is left out. It asks the objects what they need, never their classes.
+ * lights that emit nothing or lie behind an opaque plane, terms of materials that are zero at
+ * every hit, recursion no material uses, objects no ray can reach (a mesh so left out is never
+ * built), shadow rays no object can block, texture coordinates no texture reads; and it lets each
+ * tile's camera rays search only what the tile can see. Every decision is a proof, not a guess:
+ * where the proof needs something the objects cannot tell, nothing is left out. It asks the objects what they need, never their classes.
  * {@link #skips} lists each decision with its reason; the counts of what it saved are the
  * render's ({@link RenderStats#skipped}).
  */
@@ -84,8 +85,11 @@ public final class SceneAnalysis {
      * a shadow ray from a hit on another object crosses the plane before it reaches the light, and
      * a hit on the plane itself has its normal turned to the ray, to the near side, away from the
      * light. Each of its samples would add nothing, so it is left out. An object touching the
-     * plane keeps the light: its points within rounding of the plane could be lit from beyond. A
-     * light that draws samples (an area light) is kept too, as one that emits nothing is.
+     * plane keeps the light: its points within rounding of the plane could be lit from beyond. So
+     * does a light within rounding of the plane at the scene's scale, where a shadow ray's length
+     * and the plane's distance along it come out alike: the light's margin is taken relative to
+     * the largest coordinate of the camera's origins and the other objects. A light that draws
+     * samples (an area light) is kept too, as one that emits nothing is.
      */
     private void lightsBehindAPlane() {
         BBox origins = world.camera().rayOrigins(world.viewPlane());
@@ -93,6 +97,12 @@ public final class SceneAnalysis {
             return;
         }
         List<GeometricObject> objects = world.objects();
+        double size = origins.maxAbs();
+        for (GeometricObject object : objects) {
+            if (object.boundingBox().isBounded()) {
+                size = Math.max(size, object.boundingBox().maxAbs());
+            }
+        }
         for (GeometricObject wall : objects) {
             HalfSpace side = wall.wholePlane();
             if (side == null || !wall.castsShadows() || wall.materials().stream().anyMatch(Material::needsRefraction)) {
@@ -104,7 +114,7 @@ public final class SceneAnalysis {
                     continue;
                 }
                 for (Light light : world.lightList()) {
-                    if (light.castsShadows() && !light.drawsSamples() && light.liesBeyond(near)) {
+                    if (light.castsShadows() && !light.drawsSamples() && light.liesBeyond(near.atScale(size))) {
                         world.leaveOut(light);
                         skips.add(new Skip(Skipped.UNCOUNTED, name(light) + " left out",
                                            "it lies behind the " + wall.description() + ", and the camera and every other object in front"));

@@ -1,5 +1,6 @@
 package raytracer.math;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -36,5 +37,27 @@ class HalfSpaceTest {
         }
         assertThrows(IllegalArgumentException.class, () -> new HalfSpace(0, 0, 0, 1));
         assertThrows(IllegalArgumentException.class, () -> new HalfSpace(1, 0, Double.NaN, 1));
+    }
+
+    /**
+     * A plane through a far point, whose n . p cancels near the origin: its d was rounded at the
+     * point's size, so a box near the origin just past it is not excluded until it clears that
+     * size's margin; atScale raises the size, flipped keeps it.
+     */
+    @Test
+    void theMarginAlsoScalesWithTheSizeTheOffsetCameFrom() {
+        HalfSpace far = HalfSpace.through(1e8, 0, -1e8, 1, 0, 1); // x + z <= 0, from a point 1e8 away
+        assertEquals(1e8, far.size());
+        BBox near = new BBox(1e-3, 0, 0, 1, 1, 1); // x + z >= 1e-3
+        assertFalse(far.excludes(near), "1e-3 past a plane computed from coordinates of 1e8 is within its margin");
+        assertTrue(new HalfSpace(1, 0, 1, 0).excludes(near), "past an exact plane by 1e-3 at coordinates of 1 is outside");
+        assertFalse(new HalfSpace(1, 0, 1, 0).atScale(1e8).excludes(near));
+        assertEquals(1e8, far.flipped().size());
+        // its margin is 2^-30 of 2e8, 0.19: 2 past the flipped plane is outside, 0.1 past is not
+        assertTrue(far.flipped().excludes(new BBox(-2, -1, -2, -1, 1, -1)));
+        assertFalse(far.flipped().excludes(new BBox(-0.05, -1, -0.05, 0, 1, -0.05)));
+        assertTrue(new HalfSpace(0, -1, 0, 3).isAxisAligned());
+        assertFalse(far.isAxisAligned());
+        assertThrows(IllegalArgumentException.class, () -> new HalfSpace(1, 0, 0, 0, -1));
     }
 }

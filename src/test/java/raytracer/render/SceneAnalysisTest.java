@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.accel.Aggregation;
 import raytracer.core.Skip;
 import raytracer.core.Skipped;
 import raytracer.core.World;
@@ -45,26 +46,35 @@ class SceneAnalysisTest {
     }
 
     private Outcome both(String yaml) throws IOException, SceneException {
+        return both(yaml, Aggregation.Mode.LIST);
+    }
+
+    /** As {@link #both(Path)}, the objects searched as {@code accel} groups them (a BVH, or a list). */
+    private Outcome both(String yaml, Aggregation.Mode accel) throws IOException, SceneException {
         Path scene = Files.writeString(dir.resolve("s.yaml"), yaml);
-        return both(scene);
+        return both(scene, accel);
+    }
+
+    private Outcome both(Path scene) throws IOException, SceneException {
+        return both(scene, Aggregation.Mode.LIST);
     }
 
     /** Renders the scene as given and after the analysis, and checks that their PFMs are the same bytes. */
-    private Outcome both(Path scene) throws IOException, SceneException {
+    private Outcome both(Path scene, Aggregation.Mode accel) throws IOException, SceneException {
         LoadedScene plain = SceneLoader.load(scene);
         LoadedScene analysed = SceneLoader.load(scene);
         SceneAnalysis analysis = SceneAnalysis.apply(analysed.world(), analysed.rayTree());
-        RenderStats without = render(plain, dir.resolve("without.pfm"));
-        RenderStats with = render(analysed, dir.resolve("with.pfm"));
+        RenderStats without = render(plain, dir.resolve("without.pfm"), accel);
+        RenderStats with = render(analysed, dir.resolve("with.pfm"), accel);
         assertArrayEquals(Files.readAllBytes(dir.resolve("without.pfm")), Files.readAllBytes(dir.resolve("with.pfm")),
                           "the analysis changed the image; it decided " + analysis.skips());
         assertEquals(0, with.nonFiniteSamples());
         return new Outcome(analysis.skips(), without, with, analysed.world());
     }
 
-    private static RenderStats render(LoadedScene scene, Path pfm) throws IOException {
+    private static RenderStats render(LoadedScene scene, Path pfm, Aggregation.Mode accel) throws IOException {
         World world = scene.world();
-        world.prepare();
+        world.prepare(objects -> Aggregation.organize(objects, accel));
         Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
         RenderStats stats = Renders.render(world, scene.rayTree(), 2, 7, film);
         ImageWriters.write(film, world.viewPlane().exposure(), pfm);
@@ -254,6 +264,18 @@ class SceneAnalysisTest {
         // a sphere that touches the floor: its lowest points, within rounding of the plane, could be lit from below
         Outcome touching = both(scene.formatted("", "").replace("center: [0, 1.1, 0]", "center: [0, 1, 0]"));
         assertFalse(touching.decided("left out"), touching.list());
+        // a light 1e-17 below the floor, beyond it at its own scale but not at the scene's: a shadow
+        // ray's length and the floor's distance along it come out alike, and the sphere was lit
+        Outcome grazing = both(scene.formatted("", "").replace("position: [0.5, -0.01, 0.5]", "position: [0, -1e-17, 0]"));
+        assertFalse(grazing.decided("light 2"), grazing.list());
+        // a tilted floor: its far hits are off the plane by rounding that grows with their distance
+        String tilted = scene.formatted("", "").replace("normal: [0, 1, 0]", "normal: [0.1, 1, 0.2]")
+                             .replace("center: [0, 1.1, 0]", "center: [0, 1.6, 0]");
+        Outcome tiltedBelow = both(tilted);
+        assertFalse(tiltedBelow.decided("light 2"), tiltedBelow.list());
+        assertTrue(tiltedBelow.decided("light 3 (directional light) left out"), tiltedBelow.list());
+        Outcome tiltedGrazing = both(tilted.replace("position: [0.5, -0.01, 0.5]", "position: [-1e-18, -1e-17, -2e-18]"));
+        assertFalse(tiltedGrazing.decided("light 2"), tiltedGrazing.list());
         // a light without shadows lights the sphere through the floor
         Outcome unshadowed = both(scene.formatted("", "").replace("position: [0.5, -0.01, 0.5], intensity: 30}",
                                                                   "position: [0.5, -0.01, 0.5], intensity: 30, shadows: false}"));
@@ -340,5 +362,15 @@ class SceneAnalysisTest {
             assertTrue(skipped > tests / 2 && skipped < tests, camera + ": " + skipped + " of " + tests + " tests skipped");
             assertEquals(0, o.without().skipped(Skipped.OBJECT_TESTS), "not skipped when not decided");
         }
+        // the same spheres and 40 more in a BVH: its search starts, tile by tile, where the tile's view leads
+        StringBuilder more = new StringBuilder();
+        for (int k = 0; k < 40; k++) {
+            more.append("  - {type: sphere, center: [").append(-3 + 0.15 * k).append(", ").append(0.3 + 0.04 * k)
+                .append(", ").append(-1 - 0.05 * k).append("], radius: 0.12}\n");
+        }
+        Outcome bvh = both(scene.formatted("fov: 40") + more, Aggregation.Mode.MEDIAN);
+        assertTrue(bvh.decided("camera rays test only the objects"), bvh.list());
+        assertTrue(bvh.with().boxTests() < bvh.without().boxTests(),
+                   bvh.with().boxTests() + " box tests against " + bvh.without().boxTests());
     }
 }

@@ -46,7 +46,7 @@ class TileObjectsTest {
         long listed = 0;
         long all = 0;
         long hits = 0; // of spheres and boxes
-        for (int c = 0; c < 24; c++) {
+        for (int c = 0; c < 30; c++) {
             double scale = Math.pow(10, random.nextDouble(-3, 5));
             double offset = c % 4 == 3 ? 1e6 : 0;
             Point3D eye = new Point3D(offset, offset + scale, offset + 8 * scale);
@@ -56,6 +56,13 @@ class TileObjectsTest {
                 case 1 -> new ThinLens(eye, at, Vector3D.UP, random.nextDouble(20, 120), 0.2 * scale, 8 * scale);
                 default -> new Orthographic(eye, at, Vector3D.UP, random.nextDouble(2, 12) * scale);
             };
+            if (c >= 24) {
+                // a telephoto 1e8 scene sizes away in a general direction: the tiles' faces are
+                // computed from the far eye, where n . eye may cancel
+                double far = 1e8 * scale;
+                eye = new Point3D(at.x() + 0.48 * far, at.y() + 0.6 * far, at.z() + 0.64 * far);
+                camera = new Pinhole(eye, at, Vector3D.UP, Math.toDegrees(2 * Math.atan(8 / 1e8)));
+            }
             World world = new World(vp, camera, new Ambient(0, RGBColor.BLACK));
             world.addObject(new Plane(new Point3D(offset, offset - 3 * scale, offset), new Normal(0, 1, 0)));
             for (int k = 0; k < 40; k++) {
