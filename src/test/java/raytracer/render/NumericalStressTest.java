@@ -14,6 +14,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import raytracer.core.Skipped;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
@@ -73,6 +74,33 @@ class NumericalStressTest {
             ImageWriters.write(reference, 1, dir.resolve("reference.pfm"));
             ImageWriters.write(diff.image(), 1, dir.resolve("difference.pfm"));
             fail(what + " (images in " + dir + ")");
+        }
+    }
+
+    /**
+     * Each tile's camera rays searching only what the tile can see (the objects, and the part of
+     * the bunny's BVH, that its view volume leaves) changes no bit of any pixel at any scale or
+     * offset: its margins hold where the coordinates are 1e-4 or 1e6.
+     */
+    @ParameterizedTest(name = "{0} at scale {1}, offset {2}")
+    @MethodSource("cases")
+    void searchingByTileChangesNoPixelAtAnyScaleOrOffset(String scene, double scale, double offset) {
+        Film everything = new Film(StressScenes.W, StressScenes.H);
+        RenderStats all = Renders.render(SCENES.get(scene).build(scale, offset), 2, SEED, everything);
+        World world = SCENES.get(scene).build(scale, offset);
+        world.searchByTile();
+        Film byTile = new Film(StressScenes.W, StressScenes.H);
+        RenderStats tiled = Renders.render(world, 2, SEED, byTile);
+        // at 64 x 48 pixels (four tiles) every scene leaves something out: objects or boxes of the bunny's tree
+        assertTrue(tiled.skipped(Skipped.OBJECT_TESTS) > 0 || tiled.boxTests() < all.boxTests(),
+                   scene + ": nothing left out, " + all.boxTests() + " box tests both ways");
+        for (int y = 0; y < byTile.height(); y++) {
+            for (int x = 0; x < byTile.width(); x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(Float.floatToIntBits(everything.get(x, y, c)), Float.floatToIntBits(byTile.get(x, y, c)),
+                                 scene + " at scale " + scale + ", offset " + offset + ": pixel " + x + "," + y);
+                }
+            }
         }
     }
 
