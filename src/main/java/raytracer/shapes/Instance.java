@@ -1,11 +1,13 @@
 package raytracer.shapes;
 
+import java.util.ArrayList;
 import java.util.List;
 import raytracer.core.GeometricObject;
 import raytracer.core.LocalFrame;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Matrix4;
 import raytracer.math.Ray;
 
@@ -52,6 +54,60 @@ public final class Instance extends GeometricObject implements LocalFrame {
     @Override
     public String description() {
         return "instance of " + object.description();
+    }
+
+    /**
+     * The object as rays in {@code volume} can hit it, asked in its own space: a point q there is
+     * M q = A q + t in the world, so the face n . p &lt;= d is (A^T n) . q &lt;= d - n . t. The
+     * object sees the ray as the inverse matrix computes it, off the exact one by rounding that
+     * grows with the condition of A; the faces' size is raised to match (|A| |A^-1|^2 times the
+     * largest coordinate involved), so that their margin covers it. When the object narrows its
+     * search, this returns an instance of that view under the same matrices.
+     */
+    @Override
+    public GeometricObject within(List<HalfSpace> volume) {
+        if (super.within(volume) == null) {
+            return null;
+        }
+        double a = norm(forward);
+        double aInverse = norm(inverse);
+        double translation = Math.max(Math.abs(forward.get(0, 3)), Math.max(Math.abs(forward.get(1, 3)), Math.abs(forward.get(2, 3))));
+        double reach = Math.max(boundingBox().maxAbs(), translation);
+        List<HalfSpace> local = new ArrayList<>(volume.size());
+        for (HalfSpace face : volume) {
+            double nx = forward.get(0, 0) * face.nx() + forward.get(1, 0) * face.ny() + forward.get(2, 0) * face.nz();
+            double ny = forward.get(0, 1) * face.nx() + forward.get(1, 1) * face.ny() + forward.get(2, 1) * face.nz();
+            double nz = forward.get(0, 2) * face.nx() + forward.get(1, 2) * face.ny() + forward.get(2, 2) * face.nz();
+            double d = face.d() - (face.nx() * forward.get(0, 3) + face.ny() * forward.get(1, 3) + face.nz() * forward.get(2, 3));
+            if (nx == 0 && ny == 0 && nz == 0 || !Double.isFinite(nx + ny + nz + d)) {
+                return this;
+            }
+            double size = a * aInverse * aInverse * Math.max(face.size(), reach);
+            if (!Double.isFinite(size)) {
+                return this;
+            }
+            local.add(new HalfSpace(nx, ny, nz, d, size));
+        }
+        GeometricObject inner = object.within(local);
+        if (inner == object) {
+            return this;
+        }
+        if (inner == null) {
+            return null;
+        }
+        Instance view = new Instance(inner, forward, inverse);
+        view.setMaterial(getMaterial());
+        view.setCastsShadows(castsShadows());
+        return view;
+    }
+
+    /** The infinity norm of the matrix's linear part: its largest row sum of magnitudes. */
+    private static double norm(Matrix4 m) {
+        double largest = 0;
+        for (int row = 0; row < 3; row++) {
+            largest = Math.max(largest, Math.abs(m.get(row, 0)) + Math.abs(m.get(row, 1)) + Math.abs(m.get(row, 2)));
+        }
+        return largest;
     }
 
     @Override

@@ -15,9 +15,11 @@ import raytracer.core.GeometricObject;
 import raytracer.core.ShadeRec;
 import raytracer.core.ViewPlane;
 import raytracer.math.HalfSpace;
+import raytracer.math.Matrix4;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.Vector3D;
+import raytracer.shapes.Instance;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.mesh.Mesh;
 
@@ -47,6 +49,27 @@ class SubtreeSearchTest {
             startedLower += compare(bvh, camera(random, c, scale), random, scale);
         }
         assertTrue(startedLower > 100, "few searches started below the root: " + startedLower);
+    }
+
+    /**
+     * A mesh under a transform (rotation, uneven scale, translation), searched from its subtree in
+     * its own space: the tile's faces carried there, with a margin grown by the matrix's condition.
+     */
+    @Test
+    void anInstancedMeshSearchedFromItsTilesSubtreeFindsTheSameHits() {
+        SplittableRandom random = new SplittableRandom(33);
+        Mesh unit = Icosphere.make(5);
+        MeshBVH bvh = new MeshBVH(unit, new MedianSplitBuilder(4).build(MeshBVH.triangleBoxes(unit)), List.of());
+        int startedLower = 0;
+        for (int c = 0; c < 16; c++) {
+            double scale = Math.pow(10, random.nextDouble(-2, 4));
+            Matrix4 place = Matrix4.translate(random.nextDouble(-0.3, 0.3) * scale, random.nextDouble(-0.3, 0.3) * scale, 0)
+                .multiply(Matrix4.rotateY(random.nextDouble(360))).multiply(Matrix4.rotateX(random.nextDouble(360)))
+                .multiply(Matrix4.scale(scale * random.nextDouble(0.2, 1), scale * random.nextDouble(0.2, 1), scale * random.nextDouble(0.2, 1)));
+            startedLower += compare(new Instance(bvh, place), camera(random, c, scale), random, scale);
+        }
+        // the placed sphere covers less of the image than the others: fewer windows see it
+        assertTrue(startedLower > 30, "few searches started below the root: " + startedLower);
     }
 
     @Test
