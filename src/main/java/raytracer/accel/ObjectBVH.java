@@ -51,11 +51,9 @@ public final class ObjectBVH extends GeometricObject implements Leaves, StartedS
         return bvh.closestHit(ray, sr, this);
     }
 
-    /** Itself, or a view whose searches start in the subtree that holds what rays in {@code volume} can reach ({@link FlatBVH#startFor}). */
     @Override
     public GeometricObject within(List<HalfSpace> volume) {
-        FlatBVH.Start start = bvh.startFor(volume);
-        return start == null ? null : start == bvh.root ? this : new SubtreeSearch(this, start);
+        return SubtreeSearch.of(this, bvh, volume);
     }
 
     @Override

@@ -5,6 +5,7 @@ import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
 import raytracer.math.BBox;
+import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 
 /**
@@ -19,10 +20,20 @@ final class SubtreeSearch extends GeometricObject {
     private final StartedSearch search;
     private final FlatBVH.Start start;
 
-    <T extends GeometricObject & StartedSearch> SubtreeSearch(T whole, FlatBVH.Start start) {
+    private <T extends GeometricObject & StartedSearch> SubtreeSearch(T whole, FlatBVH.Start start) {
         this.whole = whole;
         this.search = whole;
         this.start = start;
+    }
+
+    /**
+     * {@code whole} (searched by {@code bvh}) as rays in {@code volume} can hit it: null when they
+     * reach none of its leaves, itself when their search starts at the root, else a view whose
+     * search starts in the subtree {@link FlatBVH#startFor} finds.
+     */
+    static <T extends GeometricObject & StartedSearch> GeometricObject of(T whole, FlatBVH bvh, List<HalfSpace> volume) {
+        FlatBVH.Start start = bvh.startFor(volume);
+        return start == null ? null : start == bvh.root ? whole : new SubtreeSearch(whole, start);
     }
 
     @Override

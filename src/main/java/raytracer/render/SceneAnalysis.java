@@ -99,8 +99,9 @@ public final class SceneAnalysis {
         List<GeometricObject> objects = world.objects();
         double size = origins.maxAbs();
         for (GeometricObject object : objects) {
-            if (object.boundingBox().isBounded()) {
-                size = Math.max(size, object.boundingBox().maxAbs());
+            BBox box = object.boundingBox();
+            if (box.isBounded()) {
+                size = Math.max(size, box.maxAbs());
             }
         }
         for (GeometricObject wall : objects) {

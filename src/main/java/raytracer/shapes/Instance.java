@@ -36,9 +36,11 @@ public final class Instance extends GeometricObject implements LocalFrame {
     @Override
     public GeometricObject prepared() {
         GeometricObject inner = object.prepared();
-        if (inner == object) {
-            return this;
-        }
+        return inner == object ? this : around(inner);
+    }
+
+    /** This instance's matrices, material and shadow setting around another object: its prepared form or a view of it. */
+    private Instance around(GeometricObject inner) {
         Instance copy = new Instance(inner, forward, inverse);
         copy.setMaterial(getMaterial());
         copy.setCastsShadows(castsShadows());
@@ -89,16 +91,7 @@ public final class Instance extends GeometricObject implements LocalFrame {
             local.add(new HalfSpace(nx, ny, nz, d, size));
         }
         GeometricObject inner = object.within(local);
-        if (inner == object) {
-            return this;
-        }
-        if (inner == null) {
-            return null;
-        }
-        Instance view = new Instance(inner, forward, inverse);
-        view.setMaterial(getMaterial());
-        view.setCastsShadows(castsShadows());
-        return view;
+        return inner == object ? this : inner == null ? null : around(inner);
     }
 
     /** The infinity norm of the matrix's linear part: its largest row sum of magnitudes. */
