@@ -49,8 +49,9 @@ record Basis(Point3D eye, Vector3D u, Vector3D v, Vector3D w) {
 
     static Basis lookAt(Point3D eye, Point3D lookAt, Vector3D up) {
         Vector3D view = eye.sub(lookAt);
-        if (!(view.length() > 0) || !view.isFinite()) {
-            throw new IllegalArgumentException("camera eye and look-at point must differ and be finite");
+        // a distance whose square overflows would normalise w to zero, and every ray with it
+        if (!(view.length() > 0) || !view.isFinite() || !Double.isFinite(view.length())) {
+            throw new IllegalArgumentException("camera eye and look-at point must differ, be finite and lie less than 1e154 apart");
         }
         if (!(up.length() > 0) || !up.isFinite()) {
             throw new IllegalArgumentException("camera up vector must be finite and non-zero");

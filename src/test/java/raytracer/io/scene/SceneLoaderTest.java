@@ -198,6 +198,8 @@ class SceneLoaderTest {
         assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "orthographic, pinhole, thin-lens");
         assertMessage(error("camera: {type: orthographic, fov: 30}\n" + BASE), "s.yaml:1:30:", "'fov'", "view-height");
         assertMessage(error("camera: {eye: [0, 0, 0], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "must differ");
+        // so far apart that the distance's square overflows: w would come out zero, and every ray with it
+        assertMessage(error("camera: {eye: [1e307, 1e307, 1e307], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "less than 1e154 apart");
         assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "area-lighting, ray-cast, whitted");
         assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
         assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
