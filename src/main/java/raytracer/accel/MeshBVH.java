@@ -142,7 +142,7 @@ public final class MeshBVH extends GeometricObject implements Leaves, StartedSea
     public boolean shadowHit(int first, int count, Ray ray, double tMax, ShadeRec sr) {
         ShearedRay sheared = sr.scratch.shearedRay;
         for (int tri = first; tri < first + count; tri++) {
-            if (mesh.intersect(tri, sheared, tMax, sr) < tMax) {
+            if (mesh.blocks(tri, sheared, tMax)) {
                 return true;
             }
         }

@@ -4,6 +4,7 @@ import raytracer.math.HalfSpace;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 import raytracer.math.Ray;
+import raytracer.math.Rounding;
 
 /** A light source (Suffern, chapter 14). */
 public abstract class Light {
@@ -74,9 +75,26 @@ public abstract class Light {
         return 1;
     }
 
-    /** True when something casts a shadow on the hit along {@code shadowRay} before the light. */
-    public boolean inShadow(Ray shadowRay, double distance, ShadeRec sr) {
-        return sr.world.shadowHit(shadowRay, distance, sr);
+    /**
+     * True when something casts a shadow on {@code sr}'s hit from this light: a shadow-casting
+     * object lies between the hit and the light's point in direction sr.wi, {@code distance} away
+     * (+infinity for a light at infinity). The shadow ray runs from the hit, offset off its surface
+     * ({@link ShadeRec#spawnRay}), to that point ({@link ShadeRec#spawnRayTo}); a surface through
+     * either end touches the ray without blocking it. Lights that know their point exactly
+     * override this to aim at it; here it is rebuilt from the direction and the distance, and the
+     * ray's direction error grows by that rounding.
+     */
+    public boolean inShadow(ShadeRec sr, double distance) {
+        MutableVec3 wi = sr.wi;
+        Ray shadowRay = sr.scratch.shadowRay;
+        if (distance == Double.POSITIVE_INFINITY) {
+            return sr.world.shadowHit(sr.spawnRay(wi.x, wi.y, wi.z, shadowRay), Double.POSITIVE_INFINITY, sr);
+        }
+        MutableVec3 p = sr.hitPoint;
+        sr.spawnRayTo(p.x + distance * wi.x, p.y + distance * wi.y, p.z + distance * wi.z, shadowRay);
+        double reach = Math.max(Math.abs(p.x), Math.max(Math.abs(p.y), Math.abs(p.z))) + distance;
+        shadowRay.setErrors(0, shadowRay.directionError + Rounding.gamma(4) * reach);
+        return sr.world.shadowHit(shadowRay, 1, sr);
     }
 
     public boolean castsShadows() {

@@ -2,6 +2,7 @@ package raytracer.core;
 
 import raytracer.math.Ray;
 import raytracer.math.MutableVec3;
+import raytracer.math.Rounding;
 
 /**
  * The hit record (Suffern, section 3.5), mutable and reused: one per recursion depth per worker.
@@ -161,6 +162,23 @@ public final class ShadeRec {
         double oy = nudge(hitPoint.y + d * n.y, d * n.y);
         double oz = nudge(hitPoint.z + d * n.z, d * n.z);
         return out.set(ox, oy, oz, dx, dy, dz);
+    }
+
+    /**
+     * Starts {@code out} at the hit point offset towards the point q = (qx, qy, qz), as
+     * {@link #spawnRay} does, and aims it at q: the direction is q - o, unnormalised, so that the
+     * ray reaches q at t = 1, its extent measured from the offset origin, not from the hit point.
+     * The subtraction's rounding is recorded as the ray's {@link Ray#directionError}, so that a
+     * surface through q is seen to touch the ray's end rather than cross before it. q is where
+     * the ray must stop: a light's point, itself offset off its surface by its error bound.
+     */
+    public Ray spawnRayTo(double qx, double qy, double qz, Ray out) {
+        spawnRay(qx - hitPoint.x, qy - hitPoint.y, qz - hitPoint.z, out);
+        double dx = qx - out.ox;
+        double dy = qy - out.oy;
+        double dz = qz - out.oz;
+        double largest = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        return out.set(out.ox, out.oy, out.oz, dx, dy, dz).setErrors(0, Rounding.gamma(1) * largest);
     }
 
     private static double nudge(double value, double offset) {

@@ -100,6 +100,29 @@ public final class AreaLight extends Light {
         return cosLight > 0 ? cosLight / d2 : 0;
     }
 
+    /**
+     * The shadow ray ends at the sample's point moved off the emitter, towards its emitting side
+     * where the hit lies, by the point's error bound along the normal and one ulp more (as
+     * {@link ShadeRec#spawnRay} moves the hit's end): a surface in the light's plane, such as a
+     * ceiling around its lamp, then lies beyond the ray's end and does not block it.
+     */
+    @Override
+    public boolean inShadow(ShadeRec sr, double distance) {
+        MutableVec3 q = sr.lightPoint;
+        MutableVec3 n = sr.lightNormal;
+        double e = emitter.pointError() * (Math.abs(n.x) + Math.abs(n.y) + Math.abs(n.z));
+        double qx = awayBy(q.x, e * n.x);
+        double qy = awayBy(q.y, e * n.y);
+        double qz = awayBy(q.z, e * n.z);
+        return sr.world.shadowHit(sr.spawnRayTo(qx, qy, qz, sr.scratch.shadowRay), 1, sr);
+    }
+
+    /** value + offset, rounded one ulp further in the offset's direction. */
+    private static double awayBy(double value, double offset) {
+        double moved = value + offset;
+        return offset > 0 ? Math.nextUp(moved) : offset < 0 ? Math.nextDown(moved) : moved;
+    }
+
     /** 1 / area: every sample is drawn uniformly over the emitter's surface. */
     @Override
     public double pdf(ShadeRec sr) {

@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.math.BBox;
 import raytracer.math.Point3D;
+import raytracer.math.Rounding;
 import raytracer.math.SampleMapping;
 import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
@@ -24,6 +25,16 @@ final class DiskEmitter implements Emitter {
         this.e1 = helper.cross(this.normal).normalize();
         this.e2 = this.normal.cross(e1);
         this.radius = radius;
+    }
+
+    /**
+     * The concentric map's sines and cosines, the products and sums, and the stored basis, whose
+     * e1 and e2 are perpendicular to the normal only to rounding: well within gamma(16) of the
+     * centre's size plus the radius.
+     */
+    @Override
+    public double pointError() {
+        return Rounding.gamma(16) * (Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius);
     }
 
     @Override

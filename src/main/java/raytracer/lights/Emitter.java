@@ -11,6 +11,12 @@ interface Emitter {
 
     double area();
 
+    /**
+     * A bound, on every axis, on how far a point written by {@link #sample} may lie from the exact
+     * surface the scene describes: the rounding of the sample's arithmetic.
+     */
+    double pointError();
+
     /** A box around every point of the emitter. */
     BBox bounds();
 

@@ -34,6 +34,12 @@ public final class PointLight extends Light {
         return distance;
     }
 
+    /** The shadow ray ends at the light's position itself, exact as given. */
+    @Override
+    public boolean inShadow(ShadeRec sr, double distance) {
+        return sr.world.shadowHit(sr.spawnRayTo(px, py, pz, sr.scratch.shadowRay), 1, sr);
+    }
+
     @Override
     public boolean isBlack() {
         return intensity.isBlack();

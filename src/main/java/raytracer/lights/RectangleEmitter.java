@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.math.BBox;
 import raytracer.math.Point3D;
+import raytracer.math.Rounding;
 import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
@@ -12,6 +13,7 @@ final class RectangleEmitter implements Emitter {
     private final Vector3D b;
     private final Vector3D normal;
     private final double area;
+    private final double pointError;
 
     RectangleEmitter(Point3D corner, Vector3D a, Vector3D b) {
         Vector3D n = a.cross(b);
@@ -23,6 +25,16 @@ final class RectangleEmitter implements Emitter {
         this.b = b;
         this.area = n.length();
         this.normal = n.normalize();
+        // corner + u a + v b with u, v in [0, 1): two products and two sums per axis
+        double largest = Math.max(Math.abs(corner.x()) + Math.abs(a.x()) + Math.abs(b.x()),
+                                  Math.max(Math.abs(corner.y()) + Math.abs(a.y()) + Math.abs(b.y()),
+                                           Math.abs(corner.z()) + Math.abs(a.z()) + Math.abs(b.z())));
+        this.pointError = Rounding.gamma(4) * largest;
+    }
+
+    @Override
+    public double pointError() {
+        return pointError;
     }
 
     @Override

@@ -2,6 +2,7 @@ package raytracer.lights;
 
 import raytracer.math.BBox;
 import raytracer.math.Point3D;
+import raytracer.math.Rounding;
 import raytracer.math.MutableVec3;
 
 /**
@@ -19,6 +20,12 @@ final class SphereEmitter implements Emitter {
         }
         this.center = center;
         this.radius = radius;
+    }
+
+    /** The unit vector from a square root, a sine and a cosine, times the radius, plus the centre: within gamma(16) of their sizes. */
+    @Override
+    public double pointError() {
+        return Rounding.gamma(16) * (Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius);
     }
 
     @Override

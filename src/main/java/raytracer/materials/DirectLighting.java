@@ -11,7 +11,6 @@ import raytracer.core.Skip;
 import raytracer.core.Skipped;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
-import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 
@@ -230,8 +229,7 @@ final class DirectLighting {
             return;
         }
         if (light.castsShadows()) {
-            Ray shadowRay = sr.spawnRay(wi.x, wi.y, wi.z, scratch.shadowRay);
-            if (light.inShadow(shadowRay, distance, sr)) {
+            if (light.inShadow(sr, distance)) {
                 return;
             }
         } else if (light.shadowRaysLeftOut()) {

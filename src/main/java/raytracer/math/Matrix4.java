@@ -101,6 +101,31 @@ public final class Matrix4 {
         return new Matrix4(r);
     }
 
+    /**
+     * A bound rho on how far {@code inverse}, this matrix's inverse as computed, is from the exact
+     * one in its linear part A: for every vector y, |(A~ - A^-1) y|_i <= rho max_k (|A~| |y|)_k.
+     * With R = A~ A - I, A^-1 = (I + R)^-1 A~, so rho = r / (1 - r) with r the infinity norm of R,
+     * taken from R as computed plus the rounding of computing it (gamma(4) |A~| |A|). Infinite when
+     * r &gt;= 1: the inverse is then no closer than its own size.
+     */
+    public double inverseError(Matrix4 inverse) {
+        double r = 0;
+        for (int i = 0; i < 3; i++) {
+            double row = 0;
+            for (int j = 0; j < 3; j++) {
+                double s = 0;
+                double magnitude = 0;
+                for (int k = 0; k < 3; k++) {
+                    s += inverse.m[4 * i + k] * m[4 * k + j];
+                    magnitude += Math.abs(inverse.m[4 * i + k] * m[4 * k + j]);
+                }
+                row += Math.abs(s - (i == j ? 1 : 0)) + Rounding.gamma(4) * magnitude;
+            }
+            r = Math.max(r, row);
+        }
+        return r < 1 ? r / (1 - r) : Double.POSITIVE_INFINITY;
+    }
+
     public Point3D transform(Point3D p) {
         return new Point3D(
             m[0] * p.x() + m[1] * p.y() + m[2] * p.z() + m[3],

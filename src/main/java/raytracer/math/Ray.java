@@ -14,7 +14,21 @@ public final class Ray {
     public double dx;
     public double dy;
     public double dz;
+    /**
+     * How far the origin may lie from the exact one, on every axis: zero for a ray made where its
+     * objects live, the transform's rounding for one an {@code Instance} took into its object's
+     * space. Shadow tests widen their bounds on t by it (see {@link #directionError}).
+     */
+    public double originError;
+    /**
+     * How far each component of the direction may lie from the exact one: the rounding of q - o
+     * for a shadow ray aimed at a point q ({@code ShadeRec.spawnRayTo}), plus an instance's. A
+     * surface through q then meets the exact ray within (originError + t directionError) |n|_1 /
+     * |n . d| of where it meets this one.
+     */
+    public double directionError;
 
+    /** Sets the ray, taken as exact (no origin or direction error). */
     public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox;
         this.oy = oy;
@@ -22,6 +36,15 @@ public final class Ray {
         this.dx = dx;
         this.dy = dy;
         this.dz = dz;
+        originError = 0;
+        directionError = 0;
+        return this;
+    }
+
+    /** Sets the bounds on the rounding of the origin and the direction (per axis); after {@link #set}. */
+    public Ray setErrors(double originError, double directionError) {
+        this.originError = originError;
+        this.directionError = directionError;
         return this;
     }
 
@@ -40,7 +63,7 @@ public final class Ray {
     }
 
     public Ray set(Ray r) {
-        return set(r.ox, r.oy, r.oz, r.dx, r.dy, r.dz);
+        return set(r.ox, r.oy, r.oz, r.dx, r.dy, r.dz).setErrors(r.originError, r.directionError);
     }
 
     public double atX(double t) {

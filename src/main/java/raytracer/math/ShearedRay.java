@@ -18,6 +18,8 @@ public final class ShearedRay {
     private double originX;
     private double originY;
     private double originZ;
+    private double originError;
+    private double directionError;
 
     /** Prepares the triangle tests of {@code ray}. */
     public ShearedRay load(Ray ray) {
@@ -39,6 +41,8 @@ public final class ShearedRay {
         originX = ray.originComponent(kx);
         originY = ray.originComponent(ky);
         originZ = ray.originComponent(kz);
+        originError = ray.originError;
+        directionError = ray.directionError;
         return this;
     }
 
@@ -79,5 +83,15 @@ public final class ShearedRay {
 
     public double originZ() {
         return originZ;
+    }
+
+    /** The ray's {@link Ray#originError}. */
+    public double originError() {
+        return originError;
+    }
+
+    /** The ray's {@link Ray#directionError}. */
+    public double directionError() {
+        return directionError;
     }
 }

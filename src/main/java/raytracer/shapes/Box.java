@@ -64,9 +64,36 @@ public final class Box extends GeometricObject {
         return recordIfCloser(slabs(ray, sr.t), sr);
     }
 
+    /**
+     * True when the ray certainly enters or leaves the box strictly between its ends. Each slab
+     * distance (b - o_k) / d_k is off by at most gamma(3) of itself, and the ray's own errors move
+     * it by (originError + t directionError) / |d_k|: a face through the light's point touches the
+     * shadow ray's end and does not block it.
+     */
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return slabs(ray, tMax) < tMax;
+        double invDx = 1.0 / ray.dx;
+        double invDy = 1.0 / ray.dy;
+        double invDz = 1.0 / ray.dz;
+        double txNear = ((invDx >= 0 ? x0 : x1) - ray.ox) * invDx;
+        double txFar = ((invDx >= 0 ? x1 : x0) - ray.ox) * invDx;
+        double tyNear = ((invDy >= 0 ? y0 : y1) - ray.oy) * invDy;
+        double tyFar = ((invDy >= 0 ? y1 : y0) - ray.oy) * invDy;
+        double tzNear = ((invDz >= 0 ? z0 : z1) - ray.oz) * invDz;
+        double tzFar = ((invDz >= 0 ? z1 : z0) - ray.oz) * invDz;
+        double tNear = Math.max(txNear, Math.max(tyNear, tzNear));
+        double tFar = Math.min(txFar, Math.min(tyFar, tzFar));
+        if (!(tNear < tFar)) {
+            return false;
+        }
+        double dNear = tNear == txNear ? ray.dx : tNear == tyNear ? ray.dy : ray.dz;
+        double dFar = tFar == txFar ? ray.dx : tFar == tyFar ? ray.dy : ray.dz;
+        return certainlyWithin(ray, tNear, dNear, tMax) || certainlyWithin(ray, tFar, dFar, tMax);
+    }
+
+    private static boolean certainlyWithin(Ray ray, double t, double dk, double tMax) {
+        double margin = Rounding.gamma(3) * Math.abs(t) + (ray.originError + Math.abs(t) * ray.directionError) / Math.abs(dk);
+        return t - margin > 0 && tMax - t - margin > 0;
     }
 
     @Override

@@ -101,9 +101,69 @@ public final class Cylinder extends GeometricObject {
         return false;
     }
 
+    /**
+     * True when the ray crosses the side or a cap in (0, tMax) at a point not shown to lie within
+     * rounding of an end: a cylinder through the light's point touches the shadow ray's end and
+     * does not block it.
+     */
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return nearest(ray, tMax, null) < tMax;
+        double a = ray.dx * ray.dx + ray.dz * ray.dz;
+        if (a > 0) {
+            double halfB = ray.ox * ray.dx + ray.oz * ray.dz;
+            double s = halfB / a;
+            double lx = ray.ox - s * ray.dx;
+            double lz = ray.oz - s * ray.dz;
+            double discriminant = radius * radius - (lx * lx + lz * lz);
+            if (discriminant >= 0) {
+                double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
+                double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
+                if (sideBlocks(ray, q / a, tMax) || sideBlocks(ray, c / q, tMax)) {
+                    return true;
+                }
+            }
+        }
+        return closed && ray.dy != 0 && (capBlocks(ray, y0, tMax) || capBlocks(ray, y1, tMax));
+    }
+
+    /**
+     * The side's crossing at t blocks unless it is shown to touch an end: with x, z the point's
+     * coordinates, g = x^2 + z^2 - r^2 has slope 2 (x dx + z dz), and the exact root lies within
+     * 2 |g| / |slope| of t while 2 a delta &lt; |slope| (as for the sphere).
+     */
+    private boolean sideBlocks(Ray ray, double t, double tMax) {
+        if (!(t > 0 && t < tMax && withinHeight(ray.atY(t)))) {
+            return false;
+        }
+        double x = ray.atX(t);
+        double z = ray.atZ(t);
+        double g2 = Rounding.gamma(2);
+        double ex = g2 * (Math.abs(ray.ox) + Math.abs(t * ray.dx));
+        double ez = g2 * (Math.abs(ray.oz) + Math.abs(t * ray.dz));
+        double xd = x * ray.dx + z * ray.dz;
+        double slope = 2 * (Math.abs(xd) - Rounding.gamma(2) * (Math.abs(x * ray.dx) + Math.abs(z * ray.dz))
+                            - ex * Math.abs(ray.dx) - ez * Math.abs(ray.dz));
+        if (!(slope > 0)) {
+            return true;
+        }
+        double rr = radius * radius;
+        double g = Math.abs(x * x + z * z - rr) + Rounding.gamma(3) * (x * x + z * z + rr)
+                   + 2 * (Math.abs(x) * ex + Math.abs(z) * ez) + ex * ex + ez * ez
+                   + 2 * (Math.abs(x) + Math.abs(z) + ex + ez) * (ray.originError + t * ray.directionError);
+        double delta = 2 * g / slope;
+        double a = ray.dx * ray.dx + ray.dz * ray.dz;
+        return !(2 * a * delta < slope && (t <= delta || tMax - t <= delta));
+    }
+
+    /**
+     * The cap at height y blocks when the ray crosses it inside the disk, certainly between its
+     * ends: t = (y - oy) / dy is off by gamma(2) of itself, and by (originError + t directionError)
+     * / |dy| from the ray's own errors.
+     */
+    private boolean capBlocks(Ray ray, double y, double tMax) {
+        double t = (y - ray.oy) / ray.dy;
+        double margin = Rounding.gamma(2) * Math.abs(t) + (ray.originError + Math.abs(t) * ray.directionError) / Math.abs(ray.dy);
+        return t - margin > 0 && tMax - t - margin > 0 && withinDisk(ray, t);
     }
 
     @Override

@@ -23,7 +23,11 @@ public final class Disk extends GeometricObject {
     }
 
     private double distance(Ray ray) {
-        double t = PlanarHit.distance(ray, center.x(), center.y(), center.z(), n.x(), n.y(), n.z());
+        return inside(ray, PlanarHit.distance(ray, center.x(), center.y(), center.z(), n.x(), n.y(), n.z()));
+    }
+
+    /** t if the ray's point at t (finite) lies on the disk, else +infinity. */
+    private double inside(Ray ray, double t) {
         if (t == Double.POSITIVE_INFINITY) {
             return t;
         }
@@ -40,7 +44,7 @@ public final class Disk extends GeometricObject {
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return distance(ray) < tMax;
+        return inside(ray, PlanarHit.crossesWithin(ray, tMax, center.x(), center.y(), center.z(), n.x(), n.y(), n.z())) < tMax;
     }
 
     @Override

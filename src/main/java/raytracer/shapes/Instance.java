@@ -10,6 +10,7 @@ import raytracer.math.BBox;
 import raytracer.math.HalfSpace;
 import raytracer.math.Matrix4;
 import raytracer.math.Ray;
+import raytracer.math.Rounding;
 
 /**
  * An object under an affine transform (Suffern, chapter 21): the ray is taken into the object's
@@ -21,6 +22,10 @@ public final class Instance extends GeometricObject implements LocalFrame {
     private final GeometricObject object;
     private final Matrix4 forward;
     private final Matrix4 inverse;
+    /** How far the inverse's linear part may be from the exact one ({@link Matrix4#inverseError}). */
+    private final double inverseError;
+    /** The infinity norm of the inverse's linear part. */
+    private final double inverseNorm;
 
     public Instance(GeometricObject object, Matrix4 transform) {
         this(object, transform, transform.inverse());
@@ -30,6 +35,8 @@ public final class Instance extends GeometricObject implements LocalFrame {
         this.object = object;
         this.forward = forward;
         this.inverse = inverse;
+        this.inverseError = forward.inverseError(inverse);
+        this.inverseNorm = norm(inverse);
     }
 
     /** The same instance of the object prepared, when preparing made a new one (a mesh's BVH). */
@@ -119,9 +126,39 @@ public final class Instance extends GeometricObject implements LocalFrame {
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
         Ray local = sr.borrowLocalRay();
         inverse.transformRay(ray, local);
+        setErrors(ray, local);
         boolean hit = object.shadowHit(local, tMax, sr);
         sr.releaseLocalRay();
         return hit;
+    }
+
+    /**
+     * Bounds how far the object-space ray is from the exact inverse image of {@code ray}, so that
+     * the object's shadow test widens its bounds on t by them. The computed inverse maps o to
+     * A~ o + t~ with t~ = -A~ t computed; against A^-1 (o - t) that is off by the inverse's error
+     * (rho |A~| (|o| + |t|)), the rounding of both products (gamma(3) each) and the world ray's
+     * own errors carried through A~; a direction has no translation.
+     */
+    private void setErrors(Ray world, Ray local) {
+        double origin = 0;
+        double direction = 0;
+        for (int row = 0; row < 3; row++) {
+            double a0 = Math.abs(inverse.get(row, 0));
+            double a1 = Math.abs(inverse.get(row, 1));
+            double a2 = Math.abs(inverse.get(row, 2));
+            double o = a0 * (Math.abs(world.ox) + Math.abs(forward.get(0, 3))) + a1 * (Math.abs(world.oy) + Math.abs(forward.get(1, 3)))
+                       + a2 * (Math.abs(world.oz) + Math.abs(forward.get(2, 3))) + Math.abs(inverse.get(row, 3));
+            double d = a0 * Math.abs(world.dx) + a1 * Math.abs(world.dy) + a2 * Math.abs(world.dz);
+            origin = Math.max(origin, o);
+            direction = Math.max(direction, d);
+        }
+        double grow = 1 + Rounding.gamma(3);
+        double originError = grow * inverseNorm * world.originError + (inverseError + Rounding.gamma(4)) * origin;
+        double directionError = grow * inverseNorm * world.directionError + (inverseError + Rounding.gamma(3)) * direction;
+        // a matrix too ill-conditioned for any bound: its object is tested as if the ray were exact
+        if (Double.isFinite(originError + directionError)) {
+            local.setErrors(originError, directionError);
+        }
     }
 
     @Override

@@ -54,7 +54,7 @@ public final class Plane extends GeometricObject {
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return distance(ray) < tMax;
+        return PlanarHit.crossesWithin(ray, tMax, ax, ay, az, nx, ny, nz) < tMax;
     }
 
     @Override

@@ -32,7 +32,11 @@ public final class Rectangle extends GeometricObject {
 
     /** t of a hit inside the parallelogram, or +infinity. */
     private double distance(Ray ray) {
-        double t = PlanarHit.distance(ray, corner.x(), corner.y(), corner.z(), n.x(), n.y(), n.z());
+        return inside(ray, PlanarHit.distance(ray, corner.x(), corner.y(), corner.z(), n.x(), n.y(), n.z()));
+    }
+
+    /** t if the ray's point at t (finite) lies in the parallelogram, else +infinity. */
+    private double inside(Ray ray, double t) {
         if (t == Double.POSITIVE_INFINITY) {
             return t;
         }
@@ -59,7 +63,7 @@ public final class Rectangle extends GeometricObject {
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return distance(ray) < tMax;
+        return inside(ray, PlanarHit.crossesWithin(ray, tMax, corner.x(), corner.y(), corner.z(), n.x(), n.y(), n.z())) < tMax;
     }
 
     @Override

@@ -50,9 +50,69 @@ public final class Sphere extends GeometricObject {
         return recordIfCloser(nearestRoot(ray, sr.t), sr);
     }
 
+    /**
+     * True when the ray crosses the sphere in (0, tMax), unless each crossing found there is shown
+     * to lie within rounding of an end ({@link #touchesAnEnd}): a sphere through the light's point
+     * touches the shadow ray's end and does not block it.
+     */
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return nearestRoot(ray, tMax) < tMax;
+        double t = nearestRoot(ray, tMax);
+        if (!(t < tMax)) {
+            return false;
+        }
+        if (!touchesAnEnd(ray, t, tMax)) {
+            return true;
+        }
+        // the near crossing touches an end: the far one may still lie between them
+        double far = nearestRoot(ray, tMax, t);
+        return far < tMax && !touchesAnEnd(ray, far, tMax);
+    }
+
+    /**
+     * True when the crossing at {@code t} is certainly within rounding of 0 or of {@code tMax}.
+     * With p = o + t d - c, g(t) = |p|^2 - r^2 vanishes at the exact crossing; its slope is
+     * 2 p . d, so the exact root lies within 2 |g| / |slope| of t when the curvature a = d . d
+     * cannot undo that (2 a delta < |slope|: at t + delta the quadratic has g's opposite sign). |g| is taken with its error bound,
+     * first plainly, then compensated ({@link Compensated}) if that leaves t undecided, and the
+     * ray's own errors move g by 2 |p|_1 (originError + t directionError). When the slope's sign
+     * is not certain (a tangent ray, or a sphere so large against the ray's length that p is all
+     * rounding) nothing is shown, and the crossing counts.
+     */
+    private boolean touchesAnEnd(Ray ray, double t, double tMax) {
+        double px = ray.atX(t) - cx;
+        double py = ray.atY(t) - cy;
+        double pz = ray.atZ(t) - cz;
+        // |p_i - exact| <= gamma(3) (|o_i| + |t d_i| + |c_i|)
+        double g3 = Rounding.gamma(3);
+        double ex = g3 * (Math.abs(ray.ox) + Math.abs(t * ray.dx) + Math.abs(cx));
+        double ey = g3 * (Math.abs(ray.oy) + Math.abs(t * ray.dy) + Math.abs(cy));
+        double ez = g3 * (Math.abs(ray.oz) + Math.abs(t * ray.dz) + Math.abs(cz));
+        double pd = px * ray.dx + py * ray.dy + pz * ray.dz;
+        double pdError = g3 * (Math.abs(px * ray.dx) + Math.abs(py * ray.dy) + Math.abs(pz * ray.dz))
+                         + ex * Math.abs(ray.dx) + ey * Math.abs(ray.dy) + ez * Math.abs(ray.dz);
+        double slope = 2 * (Math.abs(pd) - pdError);
+        if (!(slope > 0)) {
+            return false;
+        }
+        double p1 = Math.abs(px) + Math.abs(py) + Math.abs(pz);
+        double moved = 2 * (p1 + ex + ey + ez) * (ray.originError + t * ray.directionError);
+        double pp = px * px + py * py + pz * pz;
+        double plain = Math.abs(pp - radius * radius) + Rounding.gamma(4) * (pp + radius * radius)
+                       + 2 * (Math.abs(px) * ex + Math.abs(py) * ey + Math.abs(pz) * ez) + ex * ex + ey * ey + ez * ez;
+        double a = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
+        if (within(t, tMax, 2 * (plain + moved) / slope, a, slope)) {
+            return true;
+        }
+        double g = Compensated.residual(ray.ox, ray.oy, ray.oz, t, ray.dx, ray.dy, ray.dz, cx, cy, cz, radius);
+        double length = Math.sqrt(pp);
+        double compensated = Math.abs(g) + Compensated.errorBound(g, length, radius);
+        return within(t, tMax, 2 * (compensated + moved) / slope, a, slope);
+    }
+
+    /** True when {@code t} lies within {@code delta} of 0 or tMax, and the curvature a cannot spoil that bound. */
+    private static boolean within(double t, double tMax, double delta, double a, double slope) {
+        return 2 * a * delta < slope && (t <= delta || tMax - t <= delta);
     }
 
     /**
@@ -61,6 +121,11 @@ public final class Sphere extends GeometricObject {
      * its precision when the sphere is small and far from the ray origin.
      */
     private double nearestRoot(Ray ray, double tMax) {
+        return nearestRoot(ray, tMax, 0);
+    }
+
+    /** As {@link #nearestRoot(Ray, double)}, for roots in (tMin, tMax). */
+    private double nearestRoot(Ray ray, double tMax, double tMin) {
         double fx = ray.ox - cx;
         double fy = ray.oy - cy;
         double fz = ray.oz - cz;
@@ -89,10 +154,10 @@ public final class Sphere extends GeometricObject {
         double t1 = c / q;
         double tNear = Math.min(t0, t1);
         double tFar = Math.max(t0, t1);
-        if (tNear > 0 && tNear < tMax) {
+        if (tNear > tMin && tNear < tMax) {
             return tNear;
         }
-        if (tFar > 0 && tFar < tMax) {
+        if (tFar > tMin && tFar < tMax) {
             return tFar;
         }
         return Double.POSITIVE_INFINITY;

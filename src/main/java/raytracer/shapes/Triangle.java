@@ -42,7 +42,7 @@ public final class Triangle extends GeometricObject {
 
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        return !degenerate && Watertight.intersect(sr.scratch.shearedRay.load(ray), v, 0, 3, 6, tMax, sr) < tMax;
+        return !degenerate && Watertight.crossesWithin(sr.scratch.shearedRay.load(ray), v, 0, 3, 6, tMax);
     }
 
     @Override

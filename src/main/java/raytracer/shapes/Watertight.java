@@ -1,6 +1,7 @@
 package raytracer.shapes;
 
 import raytracer.core.ShadeRec;
+import raytracer.math.Ray;
 import raytracer.math.Rounding;
 import raytracer.math.ShearedRay;
 import raytracer.math.Vector3D;
@@ -18,9 +19,13 @@ public final class Watertight {
 
     /**
      * Distance to the triangle (vertices at offsets {@code a}, {@code b}, {@code c} of the flat
-     * xyz array {@code v}) if it lies in (0, tMax), with the barycentrics of b and c written to
-     * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched. An edge-on or
-     * degenerate triangle (det = 0) gets an infinite or NaN t, which fails the range test.
+     * xyz array {@code v}) if it lies in (deltaT, tMax), with the barycentrics of b and c written to
+     * {@code sr.b1}, {@code sr.b2}; otherwise +infinity and {@code sr} untouched. deltaT bounds the
+     * rounding of t ({@link #tError}): a ray that starts on the triangle's plane (a hit on a flat
+     * mesh at y = 0, whose error bound along y is 0, so its ray is not offset) computes a t of
+     * either sign from the other coordinates' rounding, and without the bound would hit the floor it
+     * leaves (pbrt-v3, section 3.9.6). An edge-on or degenerate triangle (det = 0) gets an infinite
+     * or NaN t, which fails the range test.
      */
     public static double intersect(ShearedRay ray, double[] v, int a, int b, int c, double tMax, ShadeRec sr) {
         // JIT notes (README, "Speed"): no branch here may be rarely taken, since the JIT compiles
@@ -61,13 +66,94 @@ public final class Watertight {
         double sz = ray.sz();
         double det = u + w1 + w2;
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
-        // 0 < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
-        if (!(t > 0 & tMax - t > 0)) {
+        double deltaT = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t);
+        // deltaT < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
+        if (!(t > deltaT & tMax - t > 0)) {
             return Double.POSITIVE_INFINITY;
         }
         sr.b1 = w1 / det;
         sr.b2 = w2 / det;
         return t;
+    }
+
+    /**
+     * True when the ray certainly crosses the triangle strictly between its ends: at a t whose
+     * distance from both 0 and {@code tMax} exceeds its error bound, the rounding of the test
+     * itself ({@link #tError}) plus what the ray's own errors move it ({@link Ray#originError},
+     * {@link Ray#directionError}, and the shear's rounding of the direction). A shadow ray aimed at
+     * a light's point ends there: a triangle through that point, at any angle, touches the
+     * light's end of the ray and does not block it.
+     */
+    public static boolean crossesWithin(ShearedRay ray, double[] v, int a, int b, int c, double tMax) {
+        int kx = ray.kx();
+        int ky = ray.ky();
+        int kz = ray.kz();
+        double ox = ray.originX();
+        double oy = ray.originY();
+        double oz = ray.originZ();
+        double sx = ray.sx();
+        double sy = ray.sy();
+        double az = v[a + kz] - oz;
+        double bz = v[b + kz] - oz;
+        double cz = v[c + kz] - oz;
+        double ax = v[a + kx] - ox - sx * az;
+        double ay = v[a + ky] - oy - sy * az;
+        double bx = v[b + kx] - ox - sx * bz;
+        double by = v[b + ky] - oy - sy * bz;
+        double cx = v[c + kx] - ox - sx * cz;
+        double cy = v[c + ky] - oy - sy * cz;
+        double u = cx * by - cy * bx;
+        double w1 = ax * cy - ay * cx;
+        double w2 = bx * ay - by * ax;
+        boolean someNegative = u < 0 | w1 < 0 | w2 < 0;
+        boolean somePositive = u > 0 | w1 > 0 | w2 > 0;
+        if (someNegative & somePositive) {
+            return false;
+        }
+        double sz = ray.sz();
+        double det = u + w1 + w2;
+        double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
+        if (!(t > 0 & tMax - t > 0)) {
+            return false;
+        }
+        // the ray moved by a vector of at most e per axis moves the crossing by at most
+        // e (|sz| + 2 (|N'x| + |N'y|) / |N'z|), N' the normal in the sheared frame (|sx|, |sy| <= 1)
+        double nx = sz * ((by - ay) * (cz - az) - (bz - az) * (cy - ay));
+        double ny = sz * ((bz - az) * (cx - ax) - (bx - ax) * (cz - az));
+        double perUnit = Math.abs(sz) + 2 * (Math.abs(nx) + Math.abs(ny)) / Math.abs(det);
+        // the shear stands for a direction off d by about 2u |d_kz| = 2u / |sz| per axis
+        double directionError = ray.directionError() + Rounding.gamma(2) / Math.abs(sz);
+        double margin = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t)
+                        + (ray.originError() + t * directionError) * perUnit;
+        return t - margin > 0 && tMax - t - margin > 0;
+    }
+
+    /**
+     * A bound on the rounding of the t computed by the watertight test, from the same operands
+     * (after pbrt-v3, section 3.9.6, with sums of magnitudes in place of maxima and the
+     * denominator's error included): X, Y, Z bound the sheared coordinates, deltaX, deltaY,
+     * deltaZ their rounding, deltaE that of each edge function; then the numerator
+     * sum e_i sz z_i and the determinant sum e_i carry deltaN and deltaDet, and t = N / det is off
+     * by (deltaN + |t| deltaDet) / (|det| - deltaDet) plus its own rounding. +infinity when the
+     * determinant's sign is not certain (the ray runs in the triangle's plane).
+     */
+    private static double tError(double ax, double ay, double az, double bx, double by, double bz, double cx,
+                                 double cy, double cz, double u, double w1, double w2, double sz, double det, double t) {
+        double x = Math.abs(ax) + Math.abs(bx) + Math.abs(cx);
+        double y = Math.abs(ay) + Math.abs(by) + Math.abs(cy);
+        double z = Math.abs(az) + Math.abs(bz) + Math.abs(cz);
+        double zScaled = Math.abs(sz) * z;
+        double deltaZ = Rounding.gamma(3) * zScaled;
+        double deltaX = Rounding.gamma(5) * (x + z);
+        double deltaY = Rounding.gamma(5) * (y + z);
+        double e = Math.abs(u) + Math.abs(w1) + Math.abs(w2);
+        double deltaE = Rounding.gamma(2) * x * y + deltaX * y + deltaY * x;
+        double deltaN = deltaE * zScaled + e * deltaZ + Rounding.gamma(3) * e * zScaled;
+        double deltaDet = 3 * deltaE + Rounding.gamma(2) * e;
+        double denominator = Math.abs(det) - deltaDet;
+        double absT = Math.abs(t);
+        return denominator > 0 ? (deltaN + absT * deltaDet) / denominator + Rounding.gamma(1) * absT
+                               : Double.POSITIVE_INFINITY;
     }
 
     /**

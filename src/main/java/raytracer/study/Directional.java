@@ -12,6 +12,11 @@ record Directional(Vector3D towardLight, RGBColor radiance, boolean castsShadows
     }
 
     @Override
+    public ShadowRay shadowRay(Hit hit, Incidence incidence) {
+        return new ShadowRay(hit.spawnRay(incidence.wi()), Double.POSITIVE_INFINITY);
+    }
+
+    @Override
     public RGBColor L(Hit hit) {
         return radiance;
     }

@@ -3,6 +3,7 @@ package raytracer.study;
 import raytracer.core.ShadeRec;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
+import raytracer.math.Rounding;
 import raytracer.math.Vector3D;
 
 /**
@@ -42,6 +43,20 @@ record Hit(Point3D hitPoint, Vector3D hitError, Vector3D normal, Vector3D geomet
         Point3D origin = hitPoint.add(shift);
         return new Ray().set(nudge(origin.x(), shift.x()), nudge(origin.y(), shift.y()), nudge(origin.z(), shift.z()),
                              d.x(), d.y(), d.z());
+    }
+
+    /**
+     * A new ray from the hit point, moved off as {@link #spawnRay} moves it, aimed at {@code q}: its
+     * direction q - origin reaches q at t = 1, and the subtraction's rounding is its direction
+     * error (the renderer's ShadeRec.spawnRayTo, in values).
+     */
+    Ray spawnRayTo(Point3D q) {
+        Ray from = spawnRay(q.sub(hitPoint));
+        double dx = q.x() - from.ox;
+        double dy = q.y() - from.oy;
+        double dz = q.z() - from.oz;
+        double largest = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        return new Ray().set(from.ox, from.oy, from.oz, dx, dy, dz).setErrors(0, Rounding.gamma(1) * largest);
     }
 
     private static double nudge(double value, double offset) {

@@ -1,5 +1,6 @@
 package raytracer.study;
 
+import raytracer.math.Ray;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 
@@ -13,6 +14,13 @@ interface Light {
     RGBColor L(Hit hit);
 
     boolean castsShadows();
+
+    /** The shadow ray from {@code hit} towards the light along {@code incidence}, as the renderer's Light.inShadow makes it. */
+    ShadowRay shadowRay(Hit hit, Incidence incidence);
+
+    /** A shadow ray and how far it runs: to t = 1 when aimed at the light's point, to infinity for a directional light. */
+    record ShadowRay(Ray ray, double tMax) {
+    }
 
     /** Where light comes from: the book's get_direction, with the distance it computes on the way. */
     record Incidence(Vector3D wi, double distance) {

@@ -1,7 +1,6 @@
 package raytracer.study;
 
 import raytracer.math.RGBColor;
-import raytracer.math.Ray;
 import raytracer.math.Vector3D;
 
 /**
@@ -40,8 +39,8 @@ final class Phong implements Material {
             }
             f = f.scale(nDotWi);
             if (light.castsShadows()) {
-                Ray shadowRay = hit.spawnRay(wi);
-                if (whitted.inShadow(shadowRay, incidence.distance(), hit)) {
+                Light.ShadowRay shadowRay = light.shadowRay(hit, incidence);
+                if (whitted.inShadow(shadowRay.ray(), shadowRay.tMax(), hit)) {
                     continue;
                 }
             }

@@ -16,6 +16,11 @@ record PointLight(Point3D position, RGBColor intensity, boolean castsShadows) im
     }
 
     @Override
+    public ShadowRay shadowRay(Hit hit, Incidence incidence) {
+        return new ShadowRay(hit.spawnRayTo(position), 1);
+    }
+
+    @Override
     public RGBColor L(Hit hit) {
         Vector3D toLight = position.sub(hit.hitPoint());
         return intensity.scale(1 / toLight.dot(toLight));

@@ -68,6 +68,12 @@ public final class TriangleMesh extends GeometricObject {
         return Watertight.intersect(ray, positions, 3 * t[3 * tri], 3 * t[3 * tri + 1], 3 * t[3 * tri + 2], tMax, sr);
     }
 
+    /** True when the shadow ray certainly crosses triangle {@code tri} in (0, tMax) ({@link Watertight#crossesWithin}). */
+    public boolean blocks(int tri, ShearedRay ray, double tMax) {
+        int[] t = triangles;
+        return Watertight.crossesWithin(ray, positions, 3 * t[3 * tri], 3 * t[3 * tri + 1], 3 * t[3 * tri + 2], tMax);
+    }
+
     @Override
     public boolean hit(Ray ray, ShadeRec sr) {
         ShearedRay sheared = sr.scratch.shearedRay.load(ray);
@@ -87,7 +93,7 @@ public final class TriangleMesh extends GeometricObject {
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
         ShearedRay sheared = sr.scratch.shearedRay.load(ray);
         for (int tri = 0; tri < mesh.triangleCount(); tri++) {
-            if (intersect(tri, sheared, tMax, sr) < tMax) {
+            if (blocks(tri, sheared, tMax)) {
                 return true;
             }
         }
