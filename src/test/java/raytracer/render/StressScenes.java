@@ -17,6 +17,7 @@ import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.TestAssets;
 import raytracer.lights.Ambient;
 import raytracer.lights.AreaLight;
+import raytracer.lights.Directional;
 import raytracer.lights.PointLight;
 import raytracer.materials.Dielectric;
 import raytracer.materials.Matte;
@@ -30,6 +31,7 @@ import raytracer.samplers.MultiJittered;
 import raytracer.shapes.Box;
 import raytracer.shapes.Instance;
 import raytracer.shapes.Plane;
+import raytracer.shapes.Rectangle;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.mesh.Mesh;
 import raytracer.textures.Checker;
@@ -128,6 +130,75 @@ final class StressScenes {
         add(world, turnedBox(s, d), matte(0.5, 0.6, 0.9));
         world.addLight(new PointLight(40 * s * s, RGBColor.WHITE, p(s, d, -3, 5, 4)));
         return prepared(world);
+    }
+
+    /**
+     * Flat surfaces that lie in coordinate planes, where a hit's error bound along the normal is 0
+     * (issue 22: shadow acne on a floor mesh at y = 0): a floor quad at y = 0 (at offset 0), a back
+     * wall at z = -2, a box of twelve triangles resting on the floor and a thin plate of quads
+     * standing on it, under a point light and a directional one. With {@code meshes} false the
+     * same surfaces are analytic (rectangles, a box), the reference the meshes must match.
+     */
+    static World flat(double s, double d, boolean meshes) {
+        World world = world(1, CenterSampler.INSTANCE, 2, pinhole(s, d));
+        Matte floor = matte(0.8, 0.75, 0.7);
+        add(world, quad(meshes, p(s, d, -4, 0, -4), p(s, d, -4, 0, 4), p(s, d, 4, 0, 4), p(s, d, 4, 0, -4)), floor);
+        add(world, quad(meshes, p(s, d, -4, 0, -2), p(s, d, 4, 0, -2), p(s, d, 4, 3, -2), p(s, d, -4, 3, -2)), matte(0.6, 0.7, 0.8));
+        add(world, box(meshes, p(s, d, -1.4, 0, -0.6), p(s, d, -0.4, 1, 0.4)), matte(0.9, 0.4, 0.3));
+        add(world, box(meshes, p(s, d, 0.6, 0, -0.1), p(s, d, 1.4, 0.9, 0.1)), matte(0.3, 0.8, 0.4));
+        addLights(world, s, d);
+        return prepared(world);
+    }
+
+    /**
+     * A floor tilted through the scene's origin (normal (0.2, 1, 0.1)), a mesh of two triangles or
+     * a rectangle with the same corners, a box of quads standing on it and lit as {@link #flat}.
+     */
+    static World tiltedFloor(double s, double d, boolean meshes) {
+        World world = world(1, CenterSampler.INSTANCE, 2, pinhole(s, d));
+        Vector3D n = new Vector3D(0.2, 1, 0.1).normalize();
+        Vector3D a = n.cross(new Vector3D(0, 0, 1)).normalize();
+        Vector3D b = a.cross(n);
+        Point3D o = p(s, d, 0, 0, 0);
+        Vector3D ea = a.scale(4 * s);
+        Vector3D eb = b.scale(4 * s);
+        add(world, quad(meshes, o.add(ea.scale(-1)).add(eb.scale(-1)), o.add(ea).add(eb.scale(-1)), o.add(ea).add(eb),
+                        o.add(ea.scale(-1)).add(eb)), matte(0.8, 0.75, 0.7));
+        add(world, box(meshes, p(s, d, -0.5, 0.6, -0.5), p(s, d, 0.3, 1.2, 0.3)), matte(0.9, 0.4, 0.3));
+        addLights(world, s, d);
+        return prepared(world);
+    }
+
+    private static void addLights(World world, double s, double d) {
+        world.addLight(new PointLight(40 * s * s, RGBColor.WHITE, p(s, d, 3, 2.5, 2)));
+        world.addLight(new Directional(1.2, new RGBColor(0.8, 0.85, 1), new Vector3D(-2, 3, 1)));
+    }
+
+    /** The quad a, b, c, d: two triangles of a mesh, or a rectangle at a with edges b - a and d - a. */
+    private static GeometricObject quad(boolean mesh, Point3D a, Point3D b, Point3D c, Point3D dd) {
+        if (!mesh) {
+            return new Rectangle(a, b.sub(a), dd.sub(a));
+        }
+        double[] positions = {a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), dd.x(), dd.y(), dd.z()};
+        return bvh(new Mesh(positions, null, null, new int[] {0, 1, 2, 0, 2, 3}, null), false);
+    }
+
+    /** The box between two corners: twelve triangles, or a Box. */
+    private static GeometricObject box(boolean mesh, Point3D lo, Point3D hi) {
+        if (!mesh) {
+            return new Box(lo, hi);
+        }
+        double[] x = {lo.x(), hi.x()};
+        double[] y = {lo.y(), hi.y()};
+        double[] z = {lo.z(), hi.z()};
+        double[] positions = new double[24];
+        for (int i = 0; i < 8; i++) {
+            positions[3 * i] = x[i & 1];
+            positions[3 * i + 1] = y[(i >> 1) & 1];
+            positions[3 * i + 2] = z[(i >> 2) & 1];
+        }
+        int[] faces = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+        return bvh(new Mesh(positions, null, null, faces, null), false);
     }
 
     private static World world(int samples, Sampler sampler, int depth, Camera camera) {
