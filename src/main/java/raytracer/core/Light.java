@@ -10,6 +10,7 @@ import raytracer.math.Rounding;
 public abstract class Light {
     private boolean castsShadows = true;
     private boolean shadowRaysLeftOut;
+    private boolean surfaceShown;
     /** Its place in the scene's list of lights as added, kept when the analysis leaves others out. */
     private int number;
 
@@ -37,6 +38,34 @@ public abstract class Light {
      */
     public boolean hasExtent() {
         return false;
+    }
+
+    /**
+     * True when traced rays can find this light's surface: an area light whose emitting shape is
+     * also an object of the scene ({@link #showSurface}). A material that samples both the light
+     * and its own lobe then weighs the two (multiple importance sampling); otherwise only the
+     * light's samples can see it.
+     */
+    public final boolean canBeHit() {
+        return surfaceShown;
+    }
+
+    /** Records that the light's emitting surface was added to the scene as an object (a visible area light). */
+    public final void showSurface() {
+        if (!hasExtent()) {
+            throw new IllegalStateException("a " + description() + " has no surface to show");
+        }
+        surfaceShown = true;
+    }
+
+    /**
+     * The density, over solid angle at the shaded point, with which this light's sampling picks
+     * the direction to a point of its surface {@code distance} away, seen at {@code cosLight} from
+     * the surface's normal: pdf d^2 / cos(theta_light) (Suffern, chapter 18). 0 for lights without
+     * extent, whose one direction no traced ray can find.
+     */
+    public double directionPdf(double distance, double cosLight) {
+        return 0;
     }
 
     /**

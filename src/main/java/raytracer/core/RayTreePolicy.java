@@ -87,6 +87,14 @@ public final class RayTreePolicy {
     }
 
     /**
+     * Whether a branch of factor (fr, fg, fb) from {@code depth} would be traced
+     * ({@link #recordBranchWeight}'s answer), without recording it.
+     */
+    public boolean wouldTrace(int depth, double fr, double fg, double fb) {
+        return Math.max(weightR[depth] * fr, Math.max(weightG[depth] * fg, weightB[depth] * fb)) >= cutoff;
+    }
+
+    /**
      * How many of an area light's {@code samples} a hit at {@code depth} takes: all of them for
      * camera rays, and in proportion to the path weight (rounded down, at least one) below them
      * when the cutoff is on, since a hit weighing w adds w^2 of its estimate's variance to the

@@ -93,6 +93,8 @@ public final class WorkerScratch {
         samples.startPixel(new SampleTables(world.viewPlane().sampler(), world.viewPlane().numSamples(), 0), 0, 0);
         samples.startSample(0);
         environments = new Background[levels];
+        emitters = new Light[levels];
+        emitterPdfs = new double[levels];
         policy = new RayTreePolicy(settings, world.viewPlane().exposure(), levels);
     }
 
@@ -116,6 +118,35 @@ public final class WorkerScratch {
      */
     public void setEnvironment(int depth, Background environment) {
         environments[depth] = environment;
+    }
+
+    /** Per depth: the light whose emitting surface the ray traced there hit, and that light's density for the ray's direction. */
+    private final Light[] emitters;
+    private final double[] emitterPdfs;
+
+    /**
+     * Notes that the ray traced at {@code depth} hit the visible surface of {@code light}, whose
+     * own sampling would pick that direction with solid-angle density {@code pdf}: a material that
+     * also samples the light weighs what the ray brought back against it (multiple importance
+     * sampling). Cleared by {@link #clearEmitter} before the ray is traced.
+     */
+    public void recordEmitter(int depth, Light light, double pdf) {
+        emitters[depth] = light;
+        emitterPdfs[depth] = pdf;
+    }
+
+    public void clearEmitter(int depth) {
+        emitters[depth] = null;
+    }
+
+    /** The light whose surface the ray traced at {@code depth} hit, or null. */
+    public Light emitter(int depth) {
+        return emitters[depth];
+    }
+
+    /** That light's solid-angle density for the ray's direction ({@link #recordEmitter}). */
+    public double emitterPdf(int depth) {
+        return emitterPdfs[depth];
     }
 
     /** The environment for escaping rays at {@code depth}, or null for the scene's background. */

@@ -50,6 +50,17 @@ public final class AreaLight extends Light {
         return true;
     }
 
+    /** Uniform by area: (1 / area) d^2 / cos(theta_light). */
+    @Override
+    public double directionPdf(double distance, double cosLight) {
+        return inverseArea * distance * distance / cosLight;
+    }
+
+    /** Le = ls c. */
+    public RGBColor radiance() {
+        return radiance;
+    }
+
     /**
      * Both normals must see the emitter (the geometric one decides the side, as in the shading).
      * They are the same vector unless the normal is interpolated or bumped; then one test answers

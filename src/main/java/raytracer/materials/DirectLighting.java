@@ -33,18 +33,18 @@ final class DirectLighting {
          * The report's quirks (docs/brdf-params.md), for its figure 2's brightness: f_d pi cos(theta_i)
          * + f_s, the diffuse term without its 1/pi and the specular one without cos(theta_i).
          */
-        REPORT,
-        /**
-         * As PHYSICAL, but lights with extent light the diffuse lobe only: a glossy material's traced
-         * rays find their surfaces and bring their highlight (SPEC section 2; report figure 1b).
-         */
-        GLOSSY
+        REPORT
     }
 
     private final BRDF ambient;
     private final BRDF diffuse;
     private final BRDF specular;
     private final Terms terms;
+    /**
+     * For a glossy reflector: how its lobe's term for a light sample is weighed against its glossy
+     * rays, which may find the same light (null: every light is found by its samples alone).
+     */
+    private final GlossyLightMis mis;
     /** Terms left out by {@link #simplified}: zero at every hit, so counted instead of evaluated. */
     private final boolean ambientZero;
     private final boolean diffuseZero;
@@ -54,19 +54,25 @@ final class DirectLighting {
 
     /** {@code specular} may be null (a matte surface). */
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms) {
-        this(ambient, diffuse, specular, terms, false, false, false);
+        this(ambient, diffuse, specular, terms, null, false, false, false);
     }
 
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular) {
         this(ambient, diffuse, specular, Terms.PHYSICAL);
     }
 
-    private DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms, boolean ambientZero,
+    /** The direct light of a glossy reflector, whose glossy rays also find visible area lights ({@link GlossyLightMis}). */
+    DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, GlossyLightMis mis) {
+        this(ambient, diffuse, specular, Terms.PHYSICAL, mis, false, false, false);
+    }
+
+    private DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms, GlossyLightMis mis, boolean ambientZero,
                            boolean diffuseZero, boolean specularZero) {
         this.ambient = ambient;
         this.diffuse = diffuse;
         this.specular = specular;
         this.terms = terms;
+        this.mis = mis;
         this.ambientZero = ambientZero;
         this.diffuseZero = diffuseZero;
         this.specularZero = specularZero;
@@ -89,7 +95,7 @@ final class DirectLighting {
         boolean noAmbient = ambientZero || world.ambient().isBlack() || a.isBlack();
         boolean noDiffuse = diffuseZero || d.isBlack();
         boolean noSpecular = specularZero || s != null && s.isBlack();
-        DirectLighting result = new DirectLighting(a, d, s, terms, noAmbient, noDiffuse, noSpecular);
+        DirectLighting result = new DirectLighting(a, d, s, terms, mis, noAmbient, noDiffuse, noSpecular);
         if (noAmbient && !ambientZero) {
             skips.add(new Skip(Skipped.AMBIENT_TERMS, "ambient term not evaluated",
                                of + (a.isBlack() ? ": its ambient reflectance is 0" : ": the ambient light is black")));
@@ -118,7 +124,7 @@ final class DirectLighting {
             return;
         }
         for (Light light : sr.world.lights()) {
-            addSample(sr, light, light.getDirection(sr, sr.wi), specular, 1, 1, out);
+            addSample(sr, light, light.getDirection(sr, sr.wi), specular, 1, 1, 1, out);
         }
     }
 
@@ -143,7 +149,7 @@ final class DirectLighting {
                 if (dark) {
                     scratch.skipped[Skipped.LIGHT_SAMPLES]++;
                 } else {
-                    addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, out);
+                    addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, 1, out);
                 }
                 continue;
             }
@@ -155,13 +161,12 @@ final class DirectLighting {
                 scratch.skipped[Skipped.LIGHT_SAMPLES] += n;
                 continue;
             }
-            BRDF lobe = terms == Terms.GLOSSY ? null : specular;
             for (int s = 0; s < n; s++) {
                 samples.get2D(sr.depth, PixelSamples.LIGHT + light.number(), s, most);
                 double distance = light.sample(sr, samples.u, samples.v, wi);
                 double g = light.G(sr) / light.pdf(sr);
                 if (g > 0) {
-                    addSample(sr, light, distance, lobe, g, 1.0 / n, out);
+                    addSample(sr, light, distance, specular, g, 1.0 / n, n, out);
                 }
             }
         }
@@ -192,12 +197,35 @@ final class DirectLighting {
     }
 
     /**
-     * Adds f L g cos(theta_i) {@code weight} for the light sample in direction sr.wi, where g is
-     * G / pdf and {@code weight} 1 / samples. The unshadowed contribution is computed first: when
-     * it could not change the pixel by the cutoff (Hall and Greenberg 1983), the shadow ray is not
-     * traced and the sample is left out.
+     * How many samples of {@code light} this hit draws whose lobe term covers direction
+     * {@code wi}: the light's count at this depth when the hit shows direct light, reflects it with
+     * a specular lobe and the light can reach it from wi (in front of both normals); else 0. A
+     * glossy ray that finds the light's surface in direction wi weighs its radiance against them.
      */
-    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, MutableRgb out) {
+    int lightSamplesToward(ShadeRec sr, Light light, MutableVec3 wi) {
+        if (dark || specular == null || specularZero || !sr.scratch.policy.showsDirect(sr.depth) || !light.hasExtent()
+            || !(sr.normal.dot(wi) > 0) || !(sr.geometricNormal.dot(wi) > 0) || !light.mayIlluminate(sr)) {
+            return 0;
+        }
+        for (Light l : sr.world.lights()) {
+            if (l == light) {
+                Sampler sampler = sr.world.viewPlane().sampler();
+                return sampler.supportedCount(sr.scratch.policy.lightSamples(sr.depth, light.sampleCount()));
+            }
+        }
+        return 0;
+    }
+
+    /**
+     * Adds f L g cos(theta_i) {@code weight} for the light sample in direction sr.wi, where g is
+     * G / pdf, {@code weight} 1 / samples and {@code samples} the light's sample count at this hit.
+     * The unshadowed contribution is computed first: when it could not change the pixel by the
+     * cutoff (Hall and Greenberg 1983), the shadow ray is not traced and the sample is left out.
+     * A glossy reflector's lobe term is weighed against its glossy rays ({@link GlossyLightMis});
+     * 1 / g is the sample's density over solid angle.
+     */
+    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, int samples,
+                           MutableRgb out) {
         WorkerScratch scratch = sr.scratch;
         MutableVec3 wi = sr.wi;
         double nDotWi = sr.normal.dot(wi);
@@ -214,11 +242,12 @@ final class DirectLighting {
             diffuse.f(sr, sr.wo, wi, f);
         }
         light.L(sr, incident);
+        double lobeWeight = mis != null && light.hasExtent() ? mis.lightSampleWeight(sr, light, 1 / g, samples) : 1;
         if (terms == Terms.REPORT) {
             f.scale(Math.PI * nDotWi);
-            addLobe(sr, lobe, f);
+            addLobe(sr, lobe, f, lobeWeight);
         } else {
-            addLobe(sr, lobe, f);
+            addLobe(sr, lobe, f, lobeWeight);
             f.scale(nDotWi);
         }
         // f L g, with f now holding the factor that reaches the viewer, is this sample's estimate of
@@ -238,12 +267,15 @@ final class DirectLighting {
         out.addProduct(f, incident, g * weight);
     }
 
-    private void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f) {
+    private void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f, double lobeWeight) {
         if (lobe != null && specularZero) {
             sr.scratch.skipped[Skipped.SPECULAR_LOBES]++;
         } else if (lobe != null) {
             MutableRgb fs = sr.scratch.specularScratch;
             lobe.f(sr, sr.wo, sr.wi, fs);
+            if (lobeWeight != 1) {
+                fs.scale(lobeWeight);
+            }
             f.add(fs);
         }
     }

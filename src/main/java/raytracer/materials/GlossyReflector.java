@@ -5,6 +5,7 @@ import java.util.List;
 import raytracer.brdf.GlossySpecular;
 import raytracer.brdf.Lambertian;
 import raytracer.core.Background;
+import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelSamples;
 import raytracer.core.ShadeRec;
@@ -20,9 +21,11 @@ import raytracer.math.MutableVec3;
 /**
  * Glossy Phong (report section 2.1, figure 1b; Suffern, chapter 25): the diffuse part is lit
  * directly, while the specular part traces {@code samples} rays around the mirror direction, drawn
- * by the lobe's sample_f, so that the whole scene, area lights included, is reflected blurred.
- * Area lights are therefore not sampled for the specular term ({@link DirectLighting.Terms#GLOSSY});
- * point and directional lights, which no ray can hit, still give their highlight directly.
+ * by the lobe's sample_f, so that the whole scene is reflected blurred. Every light also gives the
+ * specular term directly: point and directional lights, which no ray can hit, alone; an area light
+ * through its samples, weighed against the glossy rays that find its visible surface by multiple
+ * importance sampling ({@link GlossyLightMis}), so its highlight is there whether or not the light
+ * is visible, the rays are traced or the pass shows reflection, and is counted once.
  */
 public final class GlossyReflector extends Material {
     /** Whether a texture that reads u, v replaced the plain diffuse colour. */
@@ -34,6 +37,7 @@ public final class GlossyReflector extends Material {
     private final GlossySpecular specular;
     private DirectLighting lighting;
     private final int samples;
+    private final GlossyLightMis mis;
 
     public GlossyReflector(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, int samples,
                            boolean normalized) {
@@ -43,15 +47,15 @@ public final class GlossyReflector extends Material {
         this.ka = ka;
         this.kd = kd;
         this.specular = new GlossySpecular(ks, cs, exp, normalized);
-        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular, DirectLighting.Terms.GLOSSY);
+        this.mis = new GlossyLightMis(specular, samples);
+        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular, mis);
         this.samples = samples;
     }
 
     /** Replaces the diffuse colour by a texture looked up at each hit. */
     public void setTexture(Texture texture) {
         textured = texture.usesTextureCoordinates();
-        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular,
-                                           DirectLighting.Terms.GLOSSY);
+        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular, mis);
     }
 
     @Override
@@ -69,7 +73,10 @@ public final class GlossyReflector extends Material {
     /**
      * Adds the average over the glossy rays of the radiance each brings back times its weight
      * f cos(theta_i) / pdf (Suffern, chapter 25). The directions come from the glossy dimension of
-     * this hit's path, stratified across the pixel's samples, and each ray names its own path.
+     * this hit's path, stratified across the pixel's samples, and each ray names its own path. A
+     * ray that finds the surface of an area light this hit also samples brings back its radiance
+     * weighed against those samples ({@link GlossyLightMis}). The rays see the environment the
+     * pass gives reflected rays (magenta for the first hit of the magenta-reflection pass).
      */
     private void reflectGlossy(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
@@ -77,7 +84,7 @@ public final class GlossyReflector extends Material {
         if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {
             return;
         }
-        int n = sr.world.viewPlane().sampler().supportedCount(samples);
+        int n = mis.glossyRays(sr);
         PixelSamples pattern = scratch.samples;
         MutableVec3 wi = sr.wi;
         MutableRgb weight = scratch.weight(sr.depth);
@@ -96,8 +103,13 @@ public final class GlossyReflector extends Material {
             Ray ray = sr.spawnRay(wi.x, wi.y, wi.z, scratch.ray(next));
             pattern.branch(sr.depth, PixelSamples.GLOSSY_RAY, i, n);
             scratch.secondaryRays++;
-            scratch.setEnvironment(next, reflectionMap);
+            scratch.setEnvironment(next, scratch.policy.reflectedEnvironment(sr.depth, reflectionMap));
+            scratch.clearEmitter(next);
             sr.world.tracer().traceRay(ray, next, scratch, incoming);
+            Light emitter = scratch.emitter(next);
+            if (emitter != null) {
+                incoming.scale(mis.glossyRayWeight(sr, wi, n, lighting.lightSamplesToward(sr, emitter, wi), scratch.emitterPdf(next)));
+            }
             r += incoming.r * weight.r;
             g += incoming.g * weight.g;
             b += incoming.b * weight.b;

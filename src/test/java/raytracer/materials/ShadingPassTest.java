@@ -100,6 +100,37 @@ class ShadingPassTest {
         assertEquals(0.9, glass.get(c, c, 2), 1e-6);
     }
 
+    /**
+     * A glossy sphere's rays see the magenta environment in that pass as the mirror's do (issue 22:
+     * they saw the scene's background): it adds the glossy weight's average times (1, 0, 1) to the
+     * direct pass, where the full image adds it times the blue background. Its 4 rays are drawn
+     * alike in every pass (the same pixel, sample and seed), so the identity holds ray for ray.
+     */
+    @Test
+    void glossyRaysSeeMagentaInThatPass() {
+        Material glossy = new GlossyReflector(0.2, 0.3, new RGBColor(0.5, 0.3, 0.1), 0.5, RGBColor.WHITE, 20, 4, false);
+        Film magenta = render(glossy, ShadingPass.MAGENTA_REFLECTION);
+        Film direct = render(glossy, ShadingPass.DIRECT);
+        Film full = render(glossy, ShadingPass.FULL);
+        RGBColor background = new RGBColor(0.2, 0.5, 0.9);
+        int checked = 0;
+        for (int y = 0; y < SIZE; y++) {
+            for (int x = 0; x < SIZE; x++) {
+                if (isBackground(x, y)) {
+                    continue;
+                }
+                // the glossy term of the full image, per unit of the (uniform) background's blue
+                double weight = (full.get(x, y, 2) - direct.get(x, y, 2)) / background.b();
+                double[] m = {1, 0, 1};
+                for (int ch = 0; ch < 3; ch++) {
+                    assertEquals(direct.get(x, y, ch) + weight * m[ch], magenta.get(x, y, ch), 1e-6, "glossy " + x + "," + y);
+                }
+                checked += weight > 0.01 ? 1 : 0;
+            }
+        }
+        assertTrue(checked > 100, "the glossy rays reflected the background at only " + checked + " pixels");
+    }
+
     @Test
     void magentaKeepsTheOtherTermsAndReplacesOnlyWhatIsReflected() {
         // a brown mirror with a highlight: magenta = direct + Schlick's fraction of (1, 0, 1)

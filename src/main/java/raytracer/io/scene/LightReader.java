@@ -116,7 +116,7 @@ final class LightReader {
             throw l.source().error(l.node(), e.getMessage());
         }
         if (l.bool("visible", true)) {
-            shape.setMaterial(new Emissive(ls, color));
+            shape.setMaterial(new Emissive(ls, color, light));
             shape.setCastsShadows(false);
             world.addObject(shape);
         }
