@@ -59,7 +59,7 @@ final class OptionChecks {
         }
         Path meshCache = o.noCache ? null
             : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
-        return new RenderRequest(o.scene, out, overrides, accel, costView, o.threads, o.seed, o.repeat, o.stats, o.quiet,
+        return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
                                  meshCache);
     }
 

@@ -79,6 +79,12 @@ public final class RenderCommand implements Callable<Integer> {
                           + Aggregation.AUTO_THRESHOLD + " bounded objects on), list, median or sah.")
     String accel = "auto";
 
+    @Option(names = "--no-skip",
+            description = "Render the scene as given, without the scene analysis: no light, object, term, ray or texture "
+                          + "coordinate is left out, the max depth is the scene's (or --max-depth), every camera ray tests every "
+                          + "object, and --accel auto counts every bounded object. The image is the same; this checks that.")
+    boolean noSkip;
+
     @Option(names = "--cache-dir", paramLabel = "DIR",
             description = "Where parsed meshes and their BVHs are cached. Default: $XDG_CACHE_HOME/raytracer/meshes, "
                           + "or ~/.cache/raytracer/meshes.")

@@ -9,8 +9,9 @@ import raytracer.accel.Aggregation;
  * @param scene the scene file, or null for the embedded default scene
  * @param output the image file, known to be writable
  * @param costView true for --view bvh-cost
+ * @param analyse false for --no-skip: the scene analysis does not run, so nothing is left out
  * @param meshCache the mesh cache's folder, or null for none (--no-cache)
  */
-record RenderRequest(Path scene, Path output, SceneOverrides overrides, Aggregation.Mode accel, boolean costView,
+record RenderRequest(Path scene, Path output, SceneOverrides overrides, Aggregation.Mode accel, boolean costView, boolean analyse,
                      int threads, long seed, int repeat, boolean stats, boolean quiet, Path meshCache) {
 }

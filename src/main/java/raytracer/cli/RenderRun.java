@@ -56,8 +56,9 @@ final class RenderRun {
             RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
             DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
             long prepareStart = System.nanoTime();
-            // the cost view shows the search structure as the scene gives it: nothing left out
-            SceneAnalysis analysis = request.costView() ? null : SceneAnalysis.apply(world, rayTree);
+            // the cost view shows the search structure as the scene gives it, and --no-skip renders the
+            // scene as given: without the analysis nothing is left out (the image is the same; --no-skip checks it)
+            SceneAnalysis analysis = request.costView() || !request.analyse() ? null : SceneAnalysis.apply(world, rayTree);
             workers.call(() -> {
                 world.prepare(objects -> Aggregation.organize(objects, request.accel()));
                 return null;
@@ -81,7 +82,8 @@ final class RenderRun {
             }
             if (request.stats()) {
                 report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
-                report.skips(analysis, stats);
+                report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
+                    : "--no-skip: the scene analysis was off, the scene rendered as given");
             }
             return 0;
         }

@@ -74,11 +74,12 @@ final class RunReport {
 
     /**
      * What the scene analysis left out, one line per decision with its reason; the count of what a
-     * kind of decision saved ends its only line, or follows its last.
+     * kind of decision saved ends its only line, or follows its last. Without an analysis, one
+     * line says why none ran ({@code whyNone}).
      */
-    void skips(SceneAnalysis analysis, RenderStats s) {
+    void skips(SceneAnalysis analysis, RenderStats s, String whyNone) {
         if (analysis == null) {
-            err.println("stats: skip: nothing (the bvh-cost view shows the scene as given)");
+            err.println("stats: skip: nothing (" + whyNone + ")");
             return;
         }
         List<Skip> skips = analysis.skips();

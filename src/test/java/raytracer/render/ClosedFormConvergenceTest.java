@@ -15,14 +15,18 @@ import raytracer.reference.LitPlane;
 import raytracer.samplers.Samplers;
 
 /**
- * The renderer converges to the exact images of the closed-form scenes in scenes/ (at 32 x 32):
- * its error falls at least as fast as 1/sqrt(spp) (with samples stratified across the pixel, about
- * as 1/spp here, where the integrand is smooth), and at 1024 spp what is left is noise, not bias: the squared
- * error against the exact image is the noise variance measured between two seeds (their ratio is 1
- * within 0.09 over ten seed pairs), and the mean error is within 4 standard errors of 0. Measured
- * by rendering against deliberately wrong references: half a pixel off makes the ratio 14 to 20,
- * a flipped image 2000 to 4600; taking each pixel's centre value instead of its average is too
- * small a change to see here (0.88 against 0.86).
+ * The renderer converges to the exact images of the closed-form scenes in scenes/ (at 32 x 32;
+ * docs/converge.md quotes these figures and bounds). With samples stratified across the pixel the
+ * error falls about as 1/spp here, where the integrand is smooth: from 4 to 64 spp the RMSE falls
+ * 15.49x (rectangle) and 13.85x (disk) at seed 1, 13.3-15.5x and 12.4-15.0x over seeds 1 to 10;
+ * the test asks for more than 10, where independent samples (the sampler `random`) give 4.04 and
+ * 4.25. At 1024 spp what is left is noise, not bias: the squared error against the exact image
+ * over the noise variance measured between seeds 1 and 2 is 1.039 (rectangle) and 1.029 (disk),
+ * 0.78-1.29 and 0.90-1.43 over ten seed pairs; the test asks for 1 within 0.5. The mean error is
+ * 0.25 and 0.94 standard errors from 0; the test asks for 4. Measured earlier with independent
+ * light samples, rendering against deliberately wrong references: half a pixel off made the ratio
+ * 14 to 20, a flipped image 2000 to 4600; taking each pixel's centre value instead of its average
+ * is too small a change to see here (0.88 against 0.86).
  */
 class ClosedFormConvergenceTest {
     private static final int SIZE = 32;
@@ -43,17 +47,17 @@ class ClosedFormConvergenceTest {
         LitPlane exact = ClosedFormReader.read(file).withResolution(SIZE, SIZE);
         Film reference = exact.render(8);
 
-        // independent samples: 16 times the samples, a quarter of the error; stratified ones do better
+        // independent samples: 16 times the samples, a quarter of the error; stratified ones do about 4 times better
         double rmse4 = ErrorMetrics.compare(render(world, 4, 1), 1, reference).rmse();
         double rmse64 = ErrorMetrics.compare(render(world, 64, 1), 1, reference).rmse();
-        assertTrue(rmse4 / rmse64 > 3.4, "RMSE 4 spp " + rmse4 + ", 64 spp " + rmse64);
+        assertTrue(rmse4 / rmse64 > 10, "RMSE 4 spp " + rmse4 + ", 64 spp " + rmse64);
 
         // at 1024 spp: the error is the noise alone
         Film a = render(world, 1024, 1);
         Film b = render(world, 1024, 2);
         double noiseVariance = Math.pow(ErrorMetrics.compare(a, 1, b).rmse(), 2) / 2;
         double squaredError = Math.pow(ErrorMetrics.compare(a, 1, reference).rmse(), 2);
-        assertEquals(1, squaredError / noiseVariance, 0.35, "squared error " + squaredError + ", noise variance " + noiseVariance);
+        assertEquals(1, squaredError / noiseVariance, 0.5, "squared error " + squaredError + ", noise variance " + noiseVariance);
         double meanError = 0;
         for (int y = 0; y < SIZE; y++) {
             for (int x = 0; x < SIZE; x++) {
@@ -75,7 +79,8 @@ class ClosedFormConvergenceTest {
      * pattern over the light: the error at 16 spp is well below what 16 independent samples give.
      * That is computed from the variance of one sample, measured per pixel over 8 renders at 1 spp
      * (a single sample is uniform over the light whatever the sampler): sqrt(mean variance / 16).
-     * Measured: 16-spp RMSE about 1/8 of it with multi-jittered and Sobol' patterns.
+     * Measured: the 16-spp RMSE is 1/6.94 of it with multi-jittered patterns, 1/7.74 with Sobol'
+     * ones; the test asks for less than 1/4.
      */
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "sobol"})
