@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
+import raytracer.core.Skipped;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.io.scene.LoadedScene;
@@ -11,6 +12,7 @@ import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renders;
+import raytracer.render.SceneAnalysis;
 
 /**
  * A thin sheet of glass against closed forms computed here apart from the renderer: the Fresnel
@@ -211,5 +213,39 @@ class ThinDielectricTest {
         for (int c = 0; c < 3; c++) {
             assertEquals(red[c], solidBack.get(7, 7, c), FLOAT, "total internal reflection from behind");
         }
+    }
+
+    /**
+     * The scene analysis asks the sheet what it needs, as it asks a Dielectric: a sheet without a
+     * highlight evaluates no light (its samples are counted as skipped, not traced), and the image
+     * is the same to the bit.
+     */
+    @Test
+    void theSceneAnalysisLeavesOutTheLightsOfASheetWithoutAHighlightAndChangesNoPixel() throws SceneException {
+        String yaml = throughASheet(TILTED, "0", "full").replace("ambient: {radiance: 1}\n",
+            "ambient: {radiance: 1}\nlights:\n  - {type: point, position: [0, 4, 3], intensity: 20}\n");
+        LoadedScene plain = SceneLoader.load("sheet.yaml", yaml);
+        LoadedScene analysed = SceneLoader.load("sheet.yaml", yaml);
+        SceneAnalysis analysis = SceneAnalysis.apply(analysed.world(), analysed.rayTree());
+        assertTrue(analysis.skips().stream().anyMatch(k -> k.counter() == Skipped.LIGHT_SAMPLES && k.why().contains("'sheet'")),
+                   analysis.skips().toString());
+        Film[] films = new Film[2];
+        RenderStats[] stats = new RenderStats[2];
+        LoadedScene[] scenes = {plain, analysed};
+        for (int i = 0; i < 2; i++) {
+            World world = scenes[i].world();
+            world.prepare();
+            films[i] = new Film(9, 9);
+            stats[i] = Renders.render(world, scenes[i].rayTree(), 1, 1, films[i]);
+        }
+        for (int y = 0; y < 9; y++) {
+            for (int x = 0; x < 9; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(films[0].get(x, y, c), films[1].get(x, y, c), 0, "pixel " + x + ", " + y);
+                }
+            }
+        }
+        assertTrue(stats[1].skipped(Skipped.LIGHT_SAMPLES) >= 81, "a light sample left out at each of the sheet's hits");
+        assertEquals(0, stats[0].skipped(Skipped.LIGHT_SAMPLES));
     }
 }
