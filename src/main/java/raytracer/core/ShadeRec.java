@@ -136,7 +136,14 @@ public final class ShadeRec {
         }
         normal.normalize();
         geometricNormal.normalize();
-        frontFace = geometricNormal.dot(worldRay.dx, worldRay.dy, worldRay.dz) < 0;
+        // A ray tangent to a surface touches it without crossing, and the shapes report no hit for
+        // it (a double root, a ray in a flat shape's plane, an empty slab interval), so that a
+        // closed solid is always entered before it is left. A hit that still arrives here with
+        // n . d = 0 (rounding through an instance's matrices) is taken as seen from the front, the
+        // side the ray has been on: spawnRay then continues it on that side, so it enters and leaves
+        // at once, and no material takes the way from its origin as a path through its inside
+        // (taken as a back face, glass applied Beer's law from the camera to its silhouette).
+        frontFace = geometricNormal.dot(worldRay.dx, worldRay.dy, worldRay.dz) <= 0;
         if (!frontFace) {
             normal.negate();
             geometricNormal.negate();

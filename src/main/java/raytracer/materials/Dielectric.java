@@ -27,6 +27,8 @@ import raytracer.math.MutableVec3;
  * Phong highlights from the lights. Beer's law: a hit seen from inside the medium ends a
  * segment travelled through it, so the radiance found there is multiplied by exp(-sigma_a t), per
  * channel. That covers refracted rays, internal reflections and camera rays starting inside alike.
+ * A back face means the ray crossed the surface from inside: a ray that only touches the surface
+ * does not hit it (ShadeRec.complete), so no ray from outside is charged for a path it never took.
  *
  * <p>Radiance is not scaled by (eta_t / eta_i)^2 when crossing: a camera path that enters the
  * medium also leaves it, where the factors cancel, and leaving them out keeps paths cut short by

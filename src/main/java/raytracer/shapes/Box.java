@@ -9,7 +9,7 @@ import raytracer.math.Rounding;
 
 /**
  * An axis-aligned box between two corners (Suffern, section 19.5), hit by the slab test. Completion
- * finds the face (0..2 for -x, -y, -z, 3..5 for +x, +y, +z) nearest the hit point.
+ * finds the face (0..2 for -x, -y, -z, 3..5 for +x, +y, +z) whose slab gave the hit's distance.
  */
 public final class Box extends GeometricObject {
     private final double x0;
@@ -102,7 +102,7 @@ public final class Box extends GeometricObject {
         double px = ray.atX(t);
         double py = ray.atY(t);
         double pz = ray.atZ(t);
-        int face = nearestFace(px, py, pz);
+        int face = slabFace(ray, t);
         double g = Rounding.gamma(3);
         double ex = g * (Math.abs(ray.ox) + Math.abs(t * ray.dx));
         double ey = g * (Math.abs(ray.oy) + Math.abs(t * ray.dy));
@@ -127,6 +127,30 @@ public final class Box extends GeometricObject {
             case 1 -> { sr.u = fx; sr.v = fz; }
             default -> { sr.u = fx; sr.v = fy; }
         }
+    }
+
+    /**
+     * The face whose slab gave t in {@link #slabs}: the entry plane of the axis whose near distance
+     * is t, else the exit plane of the axis whose far distance is t. So a ray enters through a face
+     * it moves into (n . d = -|d_k| &lt; 0) and leaves through one it moves out of, even within
+     * rounding of an edge, where the face nearest the hit point may be one the ray runs along, with
+     * n . d about 0 and of either sign (a ray entering there was taken as hitting a back face).
+     * The nearest face answers only if t is no slab distance (the ray is the search's, so it is).
+     */
+    private int slabFace(Ray ray, double t) {
+        for (int exit = 0; exit < 2; exit++) {
+            for (int k = 0; k < 3; k++) {
+                double o = k == 0 ? ray.ox : k == 1 ? ray.oy : ray.oz;
+                double inv = 1.0 / (k == 0 ? ray.dx : k == 1 ? ray.dy : ray.dz);
+                // the plane of this axis that slabs() enters by (exit: leaves by), computed as there
+                boolean upper = (inv >= 0) == (exit == 1);
+                double plane = k == 0 ? (upper ? x1 : x0) : k == 1 ? (upper ? y1 : y0) : (upper ? z1 : z0);
+                if ((plane - o) * inv == t) {
+                    return upper ? k + 3 : k;
+                }
+            }
+        }
+        return nearestFace(ray.atX(t), ray.atY(t), ray.atZ(t));
     }
 
     /** The face whose plane is closest to the point, relative to the box size on that axis. */

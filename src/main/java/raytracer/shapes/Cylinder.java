@@ -37,9 +37,20 @@ public final class Cylinder extends GeometricObject {
 
     /** The nearest hit distance in (0, tMax) or +infinity; the part hit goes to {@code partSink.primitive}. */
     private double nearest(Ray ray, double tMax, ShadeRec partSink) {
-        double best = Double.POSITIVE_INFINITY;
-        int part = SIDE;
-        // side: (ox + t dx)^2 + (oz + t dz)^2 = r^2, solved stably as for the sphere
+        if (closed) {
+            return nearestOnSolid(ray, tMax, partSink);
+        }
+        double t = nearestOnSide(ray, tMax);
+        if (partSink != null && t < tMax) {
+            partSink.primitive = SIDE;
+        }
+        return t;
+    }
+
+    /** The open cylinder: the side's nearer root within the heights, else its farther one. */
+    private double nearestOnSide(Ray ray, double tMax) {
+        // side: (ox + t dx)^2 + (oz + t dz)^2 = r^2, solved stably as for the sphere; a ray along
+        // the axis (a = 0) or tangent to the side (discriminant 0) does not cross it: no hit
         double a = ray.dx * ray.dx + ray.dz * ray.dz;
         if (a > 0) {
             double halfB = ray.ox * ray.dx + ray.oz * ray.dz;
@@ -47,7 +58,7 @@ public final class Cylinder extends GeometricObject {
             double lx = ray.ox - s * ray.dx;
             double lz = ray.oz - s * ray.dz;
             double discriminant = radius * radius - (lx * lx + lz * lz);
-            if (discriminant >= 0) {
+            if (discriminant > 0) {
                 double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
                 double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
                 double ta = q / a;
@@ -55,38 +66,79 @@ public final class Cylinder extends GeometricObject {
                 double tNear = Math.min(ta, tb);
                 double tFar = Math.max(ta, tb);
                 if (tNear > 0 && tNear < tMax && withinHeight(ray.atY(tNear))) {
-                    best = tNear;
+                    return tNear;
                 } else if (tFar > 0 && tFar < tMax && withinHeight(ray.atY(tFar))) {
-                    best = tFar;
+                    return tFar;
                 }
             }
         }
-        if (closed && ray.dy != 0) {
-            double tBottom = (y0 - ray.oy) / ray.dy;
-            if (tBottom > 0 && tBottom < best && tBottom < tMax && withinDisk(ray, tBottom)) {
-                best = tBottom;
-                part = BOTTOM;
+        return Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The closed cylinder as the solid it bounds: the ray's interval inside the infinite cylinder
+     * cut by its interval between the cap planes, as the box's slab test cuts three intervals
+     * (Kay and Kajiya 1986). The ray enters where the later of the two starts and leaves where the
+     * earlier of the two ends, so every entry is a front face and every exit a back face, also
+     * through the rim, where testing the side's height and the caps' radius apart could let a ray
+     * slip between them and see the inside of the wall from outside. A ray that only touches the
+     * solid (tangent to the side, along it, or in a cap's plane) meets an empty interval: no hit.
+     */
+    private double nearestOnSolid(Ray ray, double tMax, ShadeRec partSink) {
+        double sideIn = Double.NEGATIVE_INFINITY;
+        double sideOut = Double.POSITIVE_INFINITY;
+        double a = ray.dx * ray.dx + ray.dz * ray.dz;
+        if (a > 0) {
+            double halfB = ray.ox * ray.dx + ray.oz * ray.dz;
+            double s = halfB / a;
+            double lx = ray.ox - s * ray.dx;
+            double lz = ray.oz - s * ray.dz;
+            double discriminant = radius * radius - (lx * lx + lz * lz);
+            if (!(discriminant > 0)) {
+                return Double.POSITIVE_INFINITY;
             }
-            double tTop = (y1 - ray.oy) / ray.dy;
-            if (tTop > 0 && tTop < best && tTop < tMax && withinDisk(ray, tTop)) {
-                best = tTop;
-                part = TOP;
-            }
+            double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
+            double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
+            sideIn = Math.min(q / a, c / q);
+            sideOut = Math.max(q / a, c / q);
+        } else if (!(ray.ox * ray.ox + ray.oz * ray.oz < radius * radius)) {
+            return Double.POSITIVE_INFINITY;
         }
-        if (partSink != null && best < tMax) {
+        double capIn = Double.NEGATIVE_INFINITY;
+        double capOut = Double.POSITIVE_INFINITY;
+        if (ray.dy != 0) {
+            double tBottom = (y0 - ray.oy) / ray.dy;
+            double tTop = (y1 - ray.oy) / ray.dy;
+            capIn = Math.min(tBottom, tTop);
+            capOut = Math.max(tBottom, tTop);
+        } else if (!(ray.oy > y0 && ray.oy < y1)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double in = Math.max(sideIn, capIn);
+        double out = Math.min(sideOut, capOut);
+        if (!(in < out)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        // on a tie at the rim the cap is taken: its normal's side of the ray is exact
+        double t;
+        int part;
+        if (in > 0 && in < tMax) {
+            t = in;
+            part = capIn >= sideIn ? (ray.dy > 0 ? BOTTOM : TOP) : SIDE;
+        } else if (out > 0 && out < tMax) {
+            t = out;
+            part = capOut <= sideOut ? (ray.dy > 0 ? TOP : BOTTOM) : SIDE;
+        } else {
+            return Double.POSITIVE_INFINITY;
+        }
+        if (partSink != null) {
             partSink.primitive = part;
         }
-        return best;
+        return t;
     }
 
     private boolean withinHeight(double y) {
         return y >= y0 && y <= y1;
-    }
-
-    private boolean withinDisk(Ray ray, double t) {
-        double x = ray.atX(t);
-        double z = ray.atZ(t);
-        return x * x + z * z <= radius * radius;
     }
 
     @Override

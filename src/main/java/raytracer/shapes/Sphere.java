@@ -138,7 +138,12 @@ public final class Sphere extends GeometricObject {
         double lz = fz - s * ray.dz;
         double r2 = radius * radius;
         double discriminant = r2 - (lx * lx + ly * ly + lz * lz);
-        if (!(discriminant >= 0)) {
+        // a double root is a tangent ray, touching without crossing: no hit (ShadeRec.complete). It
+        // is refused here, where it is exact: a nonzero discriminant is at least about an ulp of
+        // r^2, so the near root lies before the line's closest approach by some 1e-8 r, more than
+        // the hit point's rounding for rays from within millions of radii, and its normal faces the
+        // ray; at a double root the normal may lean either way (it was taken as a back face)
+        if (!(discriminant > 0)) {
             return Double.POSITIVE_INFINITY;
         }
         double ff = fx * fx + fy * fy + fz * fz;

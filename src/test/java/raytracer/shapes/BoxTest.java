@@ -97,4 +97,26 @@ class BoxTest {
     void flatBoxIsRejected() {
         assertThrows(IllegalArgumentException.class, () -> new Box(new Point3D(0, 0, 0), new Point3D(1, 0, 1)));
     }
+
+    @Test
+    void aRayGrazingAFaceEntersByItAndLeavesByTheFaceAhead() {
+        // slope 1e-12 down onto the top face, which it meets at x = -0.5; it leaves by x = 1
+        ShadeRec sr = h.hit(box, ray(-5, 1 + 4.5e-12, 0, 1, -1e-12, 0));
+        assertNotNull(sr);
+        assertTrue(sr.frontFace);
+        assertEquals(1, sr.normal.y, 0);
+        assertEquals("FB", h.faces(box, ray(-5, 1 + 4.5e-12, 0, 1, -1e-12, 0)));
+        // a ray touching only an edge, or lying in a face's plane, does not cross the surface
+        assertNull(h.hit(box, ray(0, 2, 0, 1, -1, 0)), "touching the edge x = 1, y = 1");
+        assertNull(h.hit(box, ray(1, 5, 0.5, 0, -1, 0)), "in the plane x = 1");
+    }
+
+    @Test
+    void raysGrazingTheSilhouetteEnterBeforeTheyLeave() {
+        // near an edge the face nearest the hit point may be the one the ray runs along, of either
+        // sign of n . d: the face must be the slab's the ray entered or left by
+        h.assertEntersBeforeLeaving("grazing a box", box, new double[] {0, 0, 0}, 4);
+        h.assertEntersBeforeLeaving("grazing a flat box", new Box(new Point3D(-3, 0.5, -1), new Point3D(2, 0.5 + 1e-3, 1)),
+                                    new double[] {0, 0.5005, 0}, 8);
+    }
 }

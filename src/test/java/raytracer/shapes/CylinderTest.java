@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static raytracer.shapes.HitTesting.ray;
 
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
+import raytracer.math.Ray;
 
 class CylinderTest {
     private final HitTesting h = new HitTesting();
@@ -70,5 +72,35 @@ class CylinderTest {
     @Test
     void rayPastTheRimOfTheCapMisses() {
         assertNull(h.hit(closed, ray(1.01, 5, 0, 0, -1, 0)));
+    }
+
+    @Test
+    void raysThatOnlyTouchTheSurfaceMiss() {
+        // tangent to the side (the double root used to be a back face), in a cap's plane, along the side
+        for (Cylinder c : new Cylinder[] {open, closed}) {
+            assertNull(h.hit(c, ray(1, 1, 5, 0, 0, -1)), "tangent to the side");
+            assertFalse(h.shadowHit(c, ray(1, 1, 5, 0, 0, -1), Double.POSITIVE_INFINITY));
+        }
+        assertNull(h.hit(closed, ray(-5, 2, 0, 1, 0, 0)), "in the top cap's plane");
+        assertNull(h.hit(closed, ray(1, 5, 0, 0, -1, 0)), "along the side");
+    }
+
+    @Test
+    void aRayGrazingTheSideEntersByTheFrontAndLeavesByTheBack() {
+        for (Cylinder c : new Cylinder[] {open, closed}) {
+            Ray grazing = ray(1 - 1e-9, 1, 5, 0, 0, -1);
+            ShadeRec sr = h.hit(c, grazing);
+            assertNotNull(sr);
+            assertTrue(sr.frontFace);
+            assertTrue(sr.normal.z > 0, "the normal faces the ray");
+            assertEquals("FB", h.faces(c, grazing));
+        }
+    }
+
+    @Test
+    void raysGrazingTheSilhouetteOfTheClosedCylinderEnterBeforeTheyLeave() {
+        // through the rim, testing the side's height and the cap's radius apart let rays slip
+        // between them and meet the inside of the wall from outside
+        h.assertEntersBeforeLeaving("grazing a closed cylinder", closed, new double[] {0, 1, 0}, 4);
     }
 }

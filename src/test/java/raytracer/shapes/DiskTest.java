@@ -140,4 +140,10 @@ class DiskTest {
         assertThrows(IllegalArgumentException.class, () -> new Disk(centre, new Vector3D(0, 1, 0), 0));
         assertThrows(IllegalArgumentException.class, () -> new Disk(new Point3D(Double.NaN, 0, 0), new Vector3D(0, 1, 0), 1));
     }
+
+    @Test
+    void grazingRaysHitTheFaceTheyComeFrom() {
+        h.assertGrazingFaces(disk, inPlane(0.5, 0.3), n, a);
+        h.assertGrazingFaces(disk, inPlane(1.2, 2), n, b);
+    }
 }

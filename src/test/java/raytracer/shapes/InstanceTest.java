@@ -64,4 +64,15 @@ class InstanceTest {
         assertSame(outer, sr.material);
         assertTrue(b.boundingBox().contains(20, 1.9, 0));
     }
+
+    @Test
+    void raysGrazingMovedSolidsEnterBeforeTheyLeave() {
+        Matrix4 m = Matrix4.translate(0.5, -1, 2).multiply(Matrix4.rotateY(30)).multiply(Matrix4.rotateX(20))
+            .multiply(Matrix4.scale(2, 1, 0.5));
+        double[] centre = {0.5, -1, 2};
+        h.assertEntersBeforeLeaving("grazing a moved box", new Instance(new Box(new Point3D(-1, -1, -1), new Point3D(1, 1, 1)), m),
+                                    centre, 8);
+        h.assertEntersBeforeLeaving("grazing a moved cylinder", new Instance(new Cylinder(-1, 1, 1, true), m), centre, 8);
+        h.assertEntersBeforeLeaving("grazing a moved sphere", new Instance(new Sphere(Point3D.ORIGIN, 1), m), centre, 8);
+    }
 }

@@ -76,4 +76,12 @@ class PlaneTest {
         assertEquals(3, sr.u, 1e-12);
         assertEquals(2, sr.v, 1e-12);
     }
+
+    @Test
+    void grazingRaysHitTheFaceTheyComeFrom() {
+        h.assertGrazingFaces(ground, new double[] {0.3, 1, -0.2}, new double[] {0, 1, 0}, new double[] {1, 0, 0});
+        double s = Math.sqrt(0.5);
+        Plane tilted = new Plane(new Point3D(1, 2, 3), new Normal(1, 1, 0));
+        h.assertGrazingFaces(tilted, new double[] {1, 2, 3}, new double[] {s, s, 0}, new double[] {0, 0, 1});
+    }
 }

@@ -13,6 +13,7 @@ import java.math.MathContext;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
+import raytracer.math.Matrix4;
 import raytracer.math.Point3D;
 import raytracer.math.Ray;
 import raytracer.math.MutableVec3;
@@ -41,11 +42,38 @@ class SphereTest {
     }
 
     @Test
-    void tangentRayTouchesAndARayJustOutsideMisses() {
-        ShadeRec sr = h.hit(unit, ray(1, 0, 5, 0, 0, -1));
-        assertNotNull(sr);
-        assertEquals(5, sr.t, 1e-7);
+    void aTangentRayTouchesWithoutCrossingAndMisses() {
+        // the double root at t = 5 used to be a hit whose normal (1, 0, 0) has n . d = 0: a back face
+        for (double[] o : new double[][] {{1, 0, 5}, {-1, 0, 5}, {0, 1, 5}, {0, -1, 5}}) {
+            Ray tangent = ray(o[0], o[1], o[2], 0, 0, -1);
+            assertNull(h.hit(unit, tangent), "tangent at " + o[0] + ", " + o[1]);
+            assertFalse(h.shadowHit(unit, tangent, Double.POSITIVE_INFINITY));
+        }
         assertNull(h.hit(unit, ray(1 + 1e-9, 0, 5, 0, 0, -1)));
+        // a scaled instance sees the same double root in its own space
+        Instance twice = new Instance(unit, Matrix4.scale(2, 2, 2));
+        assertNull(h.hit(twice, ray(2, 0, 5, 0, 0, -1)));
+    }
+
+    @Test
+    void aRayJustInsideTheTangentEntersByTheFrontAndLeavesByTheBack() {
+        Ray grazing = ray(1 - 1e-9, 0, 5, 0, 0, -1);
+        ShadeRec sr = h.hit(unit, grazing);
+        assertNotNull(sr);
+        assertTrue(sr.frontFace);
+        assertTrue(sr.normal.z > 0, "the normal faces the ray");
+        assertEquals("FB", h.faces(unit, grazing));
+        // from inside, along the same line, the wall ahead is a back face
+        ShadeRec inside = h.hit(unit, ray(1 - 1e-9, 0, 0, 0, 0, -1));
+        assertNotNull(inside);
+        assertFalse(inside.frontFace);
+    }
+
+    @Test
+    void raysGrazingTheSilhouetteEnterBeforeTheyLeave() {
+        h.assertEntersBeforeLeaving("grazing a sphere", new Sphere(new Point3D(0.3, -0.2, 0.1), 1), new double[] {0.3, -0.2, 0.1}, 3);
+        h.assertEntersBeforeLeaving("grazing a moved ellipsoid", new Instance(unit, Matrix4.rotateY(30)
+            .multiply(Matrix4.scale(2, 1, 0.5))), new double[] {0, 0, 0}, 3);
     }
 
     @Test

@@ -99,8 +99,10 @@ public final class ObjLoader {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
         fileWarnings.finish();
-        return new ObjModel(MeshAssembly.build(this, smoothNormals), materials.materials(), List.copyOf(warnings),
-                            faces.faces, faces.ngons, materials.libraries());
+        Mesh mesh = MeshAssembly.build(this, smoothNormals);
+        List<ObjMaterial> used = materials.materials();
+        return new ObjModel(mesh, used, List.copyOf(warnings), faces.faces, faces.ngons, materials.libraries(),
+                            OpenSheets.of(mesh, used));
     }
 
     private boolean isEmpty() {

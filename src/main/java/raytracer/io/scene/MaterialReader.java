@@ -15,6 +15,7 @@ import raytracer.materials.GlossyReflector;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
 import raytracer.materials.Reflective;
+import raytracer.materials.ThinDielectric;
 import raytracer.math.RGBColor;
 
 /** One entry of the {@code materials} map, of any of the types listed in docs/scene-format.md. */
@@ -85,6 +86,8 @@ final class MaterialReader {
                 r.setReflectionMap(map);
             } else if (material instanceof Dielectric d) {
                 d.setReflectionMap(map);
+            } else if (material instanceof ThinDielectric d) {
+                d.setReflectionMap(map);
             } else if (material instanceof GlossyReflector g) {
                 g.setReflectionMap(map);
             }
@@ -100,12 +103,14 @@ final class MaterialReader {
             case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
                                         "fresnel", "texture", "reflection-map");
             case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent", "reflection-map");
+            case "thin-dielectric" -> Set.of("type", "ior", "ks", "exponent", "reflection-map");
             case "glossy" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "samples", "normalized",
                                     "texture", "reflection-map");
             case "ward", "ward-duer" -> Set.of("type", "preset", "rho-d", "rho-s", "alpha", "ka", "seed-compatible");
             case "blinn-phong" -> Set.of("type", "preset", "rho-d", "rho-s", "exponent", "ka", "seed-compatible");
             default -> throw source.error(YamlObject.typeNode(node),
-                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, glossy, matte, phong, reflective, ward, ward-duer");
+                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, glossy, matte, phong, reflective, "
+                + "thin-dielectric, ward, ward-duer");
         };
         YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
         if (kind.startsWith("ward") || kind.equals("blinn-phong")) {
@@ -114,6 +119,10 @@ final class MaterialReader {
         if (kind.equals("dielectric")) {
             return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
                                   m.number("ks", 0, 0, false), m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
+        }
+        if (kind.equals("thin-dielectric")) {
+            return new ThinDielectric(m.number("ior", IOR, 0, true), m.number("ks", 0, 0, false),
+                                      m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
         }
         double ka = m.number("ka", KA, 0, false);
         double kd = m.number("kd", KD, 0, false);

@@ -162,7 +162,8 @@ public final class MeshCache {
                 }
                 MeshCacheFile.Header h = new MeshCacheFile.Header(source, options, libraries, model.faces(), model.ngons(),
                     model.mesh().vertexCount(), model.mesh().triangleCount(), model.mesh().hasNormals(),
-                    model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials());
+                    model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials(),
+                    model.sheets());
                 Files.createDirectories(cache.dir);
                 MeshCacheFile.write(file, h, mesh.mesh(), mesh.bvh());
                 return true;

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.zip.CRC32C;
 import raytracer.accel.BvhFile;
@@ -39,7 +40,7 @@ final class MeshCacheFile {
      * The layout above and what the OBJ reader and {@link MeshReader} make of a file: add 1 when
      * either changes, so that files written before are rebuilt rather than trusted.
      */
-    static final int VERSION = 1;
+    static final int VERSION = 2;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
@@ -53,11 +54,11 @@ final class MeshCacheFile {
     /**
      * What a cache file says before its arrays: the OBJ and the MTL files it was made from, the
      * options it was made with, the figures --stats prints, the mesh's exact bounds (for the scene
-     * analysis) and its MTL materials.
+     * analysis), its MTL materials and which of them are open sheets ({@link raytracer.io.obj.ObjModel#sheets}).
      */
     record Header(Stamp source, String options, List<Stamp> libraries, int faces, int ngons, int vertices,
                   int triangles, boolean normals, boolean uvs, boolean materialIds, BBox bounds,
-                  List<ObjMaterial> materials) {
+                  List<ObjMaterial> materials, Set<Integer> sheets) {
     }
 
     /** A mesh and its tree as read back. */

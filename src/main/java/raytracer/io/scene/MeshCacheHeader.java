@@ -8,6 +8,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.io.scene.MeshCacheFile.Header;
 import raytracer.io.scene.MeshCacheFile.Stamp;
@@ -15,8 +17,9 @@ import raytracer.math.BBox;
 
 /**
  * The header of a mesh cache file in bytes ({@link java.io.DataOutput} form): the stamps of the OBJ
- * and MTL files it was made from, the options, the counts, the bounds and the MTL materials. Apart
- * from {@link MeshCacheFile} so that the layout of the arrays reads on its own.
+ * and MTL files it was made from, the options, the counts, the bounds, the MTL materials and which
+ * of them are open sheets. Apart from {@link MeshCacheFile} so that the layout of the arrays reads
+ * on its own.
  */
 final class MeshCacheHeader {
     private MeshCacheHeader() {
@@ -46,6 +49,10 @@ final class MeshCacheHeader {
         for (ObjMaterial m : h.materials()) {
             writeMaterial(out, m);
         }
+        out.writeInt(h.sheets().size());
+        for (int id : h.sheets()) {
+            out.writeInt(id);
+        }
         out.flush();
         return bytes.toByteArray();
     }
@@ -71,11 +78,19 @@ final class MeshCacheHeader {
         for (int i = count(in); i > 0; i--) {
             materials.add(readMaterial(in));
         }
+        Set<Integer> sheets = new TreeSet<>();
+        for (int i = count(in); i > 0; i--) {
+            int id = in.readInt();
+            if (id < 0 || id >= materials.size()) {
+                throw new IOException("its header names material " + id + " of " + materials.size() + " as a sheet");
+            }
+            sheets.add(id);
+        }
         if (vertices < 0 || triangles < 1) {
             throw new IOException("its header counts " + vertices + " vertices and " + triangles + " triangles");
         }
         return new Header(source, options, libraries, faces, ngons, vertices, triangles, normals, uvs, ids, bounds,
-                          materials);
+                          materials, Set.copyOf(sheets));
     }
 
     private static int count(DataInputStream in) throws IOException {

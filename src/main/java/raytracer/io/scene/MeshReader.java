@@ -3,6 +3,7 @@ package raytracer.io.scene;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import raytracer.accel.MeshBVH;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
@@ -15,6 +16,7 @@ import raytracer.materials.Dielectric;
 import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
+import raytracer.materials.ThinDielectric;
 import raytracer.math.RGBColor;
 import raytracer.textures.ImageTexture;
 
@@ -62,10 +64,11 @@ final class MeshReader {
             report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
         }
         List<ObjMaterial> objMaterials = cached != null ? cached.materials() : model.materials();
+        Set<Integer> sheets = cached != null ? cached.sheets() : model.sheets();
         List<Material> materials = new ArrayList<>();
         if (override == null) {
-            for (ObjMaterial m : objMaterials) {
-                materials.add(fromMtl(m, textures, report));
+            for (int id = 0; id < objMaterials.size(); id++) {
+                materials.add(fromMtl(objMaterials.get(id), sheets.contains(id), textures, report));
             }
         }
         List<NormalMap> maps = normalMaps(o, objMaterials, textures, report);
@@ -151,29 +154,34 @@ final class MeshReader {
     /**
      * An MTL material onto ours: Ke to a visible emitter; d (or Tr) below 1 to glass of index Ni,
      * with a highlight when Ks and Ns are set, and a warning saying so, since partial dissolve is
-     * not blended; otherwise Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong
-     * lobe. An unreadable map_Kd is a warning.
+     * not blended: a thin sheet of it ({@link ThinDielectric}) when its triangles leave an edge
+     * open ({@code sheet}), the surface of a solid ({@link Dielectric}) when they close; otherwise
+     * Kd (or map_Kd) to a Lambertian with, when Ks and Ns are set, a Phong lobe. An unreadable
+     * map_Kd is a warning.
      */
-    static Material fromMtl(ObjMaterial m, TextureReader textures, LoadReport report) {
-        Material material = fromMtlValues(m, textures, report);
+    static Material fromMtl(ObjMaterial m, boolean sheet, TextureReader textures, LoadReport report) {
+        Material material = fromMtlValues(m, sheet, textures, report);
         material.setName(m.name());
         return material;
     }
 
-    private static Material fromMtlValues(ObjMaterial m, TextureReader textures, LoadReport report) {
+    private static Material fromMtlValues(ObjMaterial m, boolean sheet, TextureReader textures, LoadReport report) {
         RGBColor kd = new RGBColor(m.kd()[0], m.kd()[1], m.kd()[2]);
         RGBColor ks = new RGBColor(m.ks()[0], m.ks()[1], m.ks()[2]);
         RGBColor ke = new RGBColor(m.ke()[0], m.ke()[1], m.ke()[2]);
         if (ke.max() > 0) {
             return new Emissive(1, ke);
         }
-        if (m.dissolve() < 1) {
+        if (m.seeThrough()) {
             // exporters write "Ni 1" whatever the material, and glass of index 1 would be invisible
             double ior = m.ior() > 1 ? m.ior() : MaterialReader.IOR;
-            report.addWarning("material '" + m.name() + "': d " + m.dissolve() + " is read as clear glass of index " + ior
-                             + " (partial transparency is not blended)");
+            report.addWarning("material '" + m.name() + "': d " + m.dissolve() + " is read as "
+                              + (sheet ? "a thin sheet of clear glass of index " + ior + ", since its triangles leave an edge open"
+                                       : "clear glass of index " + ior) + " (partial transparency is not blended)");
             boolean lobe = ks.max() > 0 && m.ns() > 0;
-            return new Dielectric(ior, RGBColor.BLACK, lobe ? ks.max() : 0, lobe ? m.ns() : MaterialReader.DIELECTRIC_EXPONENT);
+            double highlight = lobe ? ks.max() : 0;
+            double exponent = lobe ? m.ns() : MaterialReader.DIELECTRIC_EXPONENT;
+            return sheet ? new ThinDielectric(ior, highlight, exponent) : new Dielectric(ior, RGBColor.BLACK, highlight, exponent);
         }
         Texture texture = null;
         if (m.mapKd() != null) {

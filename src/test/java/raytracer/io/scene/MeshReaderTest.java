@@ -25,6 +25,7 @@ import raytracer.materials.Dielectric;
 import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
 import raytracer.materials.Phong;
+import raytracer.materials.ThinDielectric;
 import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
@@ -57,7 +58,7 @@ class MeshReaderTest {
         TextureReader textures = new TextureReader(new Source(dir.resolve("s.yaml").toString(), dir));
         Material[] m = new Material[mtl.size()];
         for (int i = 0; i < m.length; i++) {
-            m[i] = MeshReader.fromMtl(mtl.get(i), textures, report);
+            m[i] = MeshReader.fromMtl(mtl.get(i), false, textures, report);
         }
         assertEquals(8, m.length, mtl.toString());
         assertInstanceOf(Matte.class, m[0]);
@@ -152,6 +153,38 @@ class MeshReaderTest {
             SceneException e = assertThrows(SceneException.class, () -> SceneLoader.load(dir.resolve("bad.yaml")), b[0]);
             assertTrue(e.getMessage().startsWith(dir.resolve("bad.yaml") + ":2:"), e.getMessage());
             assertTrue(e.getMessage().contains(b[1]), b[1] + " missing from: " + e.getMessage());
+        }
+    }
+
+    /**
+     * Glass from an MTL file is a thin sheet where its triangles leave an edge open (a window pane
+     * is no inside of a medium from behind) and a solid where they close; the choice is the same
+     * when the mesh comes back from the mesh cache, which stores it.
+     */
+    @Test
+    void anOpenGlassSheetIsThinGlassAndAClosedGlassMeshIsASolid(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("m.mtl"), "newmtl bottle\nd 0.1\nNi 1.5\nnewmtl window\nd 0.2\nNi 1.5\n");
+        StringBuilder obj = new StringBuilder("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\n"
+                                              + "v 1 1 1\nv 0 1 1\nv 2 0 0\nv 3 0 0\nv 3 1 0\nv 2 1 0\nusemtl bottle\n");
+        for (String face : new String[] {"1 4 3 2", "5 6 7 8", "1 2 6 5", "2 3 7 6", "3 4 8 7", "4 1 5 8"}) {
+            obj.append("f ").append(face).append('\n');
+        }
+        obj.append("usemtl window\nf 9 10 11 12\n");
+        Files.writeString(dir.resolve("m.obj"), obj);
+        Path scene = Files.writeString(dir.resolve("s.yaml"), "objects:\n  - {type: mesh, file: m.obj}\n");
+        MeshCache cache = MeshCache.in(dir.resolve("cache"));
+        for (String load : new String[] {"parsed", "read from the mesh cache"}) {
+            LoadedScene loaded = SceneLoader.load(scene, cache);
+            loaded.world().prepare();
+            boolean fromCache = loaded.report().statistics().stream().anyMatch(line -> line.contains("read from the mesh cache"));
+            assertEquals(load.equals("read from the mesh cache"), fromCache, load + ": " + loaded.report().statistics());
+            List<Material> materials = loaded.world().materials();
+            Material bottle = materials.stream().filter(m -> m.name().equals("bottle")).findFirst().orElseThrow();
+            Material window = materials.stream().filter(m -> m.name().equals("window")).findFirst().orElseThrow();
+            assertInstanceOf(Dielectric.class, bottle, load + ": the closed cube is a solid");
+            assertEquals(1.5, assertInstanceOf(ThinDielectric.class, window, load + ": the open quad is a sheet").ior(), 0);
+            assertTrue(loaded.report().warnings().stream().anyMatch(w -> w.contains("'window'") && w.contains("thin sheet")),
+                       loaded.report().warnings().toString());
         }
     }
 

@@ -105,4 +105,34 @@ class TriangleMeshTest {
         assertEquals(9, reordered.positions()[3 * 5], "the unused vertex goes last");
         assertArrayEquals(new int[] {0, 1, 2, 1, 3, 2, 3, 4, 2, 0, 4, 1}, mesh.triangles(), "the original is unchanged");
     }
+
+    @Test
+    void grazingRaysHitTheFaceTheyComeFromAndRaysInThePlaneMiss() {
+        // a quad on the plane z = x / 2, normal (-1, 0, 2) / sqrt5, split along its diagonal
+        TriangleMesh quad = new TriangleMesh(new Mesh(new double[] {0, 0, 0, 2, 0, 1, 2, 2, 1, 0, 2, 0}, null, null,
+                                                      new int[] {0, 1, 2, 0, 2, 3}, null), List.of());
+        double[] n = {-1 / Math.sqrt(5), 0, 2 / Math.sqrt(5)};
+        double[] a = {0, 1, 0};
+        ShadeRec sr = MeshTesting.shadeRec();
+        Ray ray = new Ray();
+        // inside one triangle, and on the diagonal the two share
+        for (double[] q : new double[][] {{1.5, 0.5, 0.75}, {1, 1, 0.5}}) {
+            for (double slope : new double[] {1e-2, 1e-6, 1e-10, 1e-14}) {
+                for (int side : new int[] {1, -1}) {
+                    double[] d = {a[0] - side * slope * n[0], a[1] - side * slope * n[1], a[2] - side * slope * n[2]};
+                    ray.set(q[0] - d[0], q[1] - d[1], q[2] - d[2], d[0], d[1], d[2]);
+                    sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+                    String what = "at " + q[0] + ", " + q[1] + ", slope " + slope + " from the " + (side > 0 ? "front" : "back");
+                    assertTrue(quad.hit(ray, sr), what);
+                    sr.complete(ray);
+                    assertEquals(side > 0, sr.frontFace, what);
+                    assertTrue(sr.geometricNormal.dot(d[0], d[1], d[2]) < 0, what + ": the normal faces the ray");
+                }
+            }
+            ray.set(q[0] - 1, q[1] - 1, q[2] - 0.5, 1, 1, 0.5);
+            sr.beginSearch(ray, 0, Double.POSITIVE_INFINITY);
+            assertFalse(quad.hit(ray, sr), "a ray in the plane");
+            assertFalse(quad.shadowHit(ray, Double.POSITIVE_INFINITY, sr), "a shadow ray in the plane");
+        }
+    }
 }
