@@ -154,37 +154,62 @@ public final class Cylinder extends GeometricObject {
     }
 
     /**
-     * True when the ray crosses the side or a cap in (0, tMax) at a point not shown to lie within
+     * True when the ray crosses the surface in (0, tMax) at a point not shown to lie within
      * rounding of an end: a cylinder through the light's point touches the shadow ray's end and
-     * does not block it.
+     * does not block it. The crossings are those {@link #hit} finds: the side's roots within the
+     * heights for the open cylinder; the entry and exit of the solid for the closed one.
      */
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
         double a = ray.dx * ray.dx + ray.dz * ray.dz;
+        double sideIn = Double.NEGATIVE_INFINITY;
+        double sideOut = Double.POSITIVE_INFINITY;
         if (a > 0) {
             double halfB = ray.ox * ray.dx + ray.oz * ray.dz;
             double s = halfB / a;
             double lx = ray.ox - s * ray.dx;
             double lz = ray.oz - s * ray.dz;
             double discriminant = radius * radius - (lx * lx + lz * lz);
-            if (discriminant >= 0) {
-                double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
-                double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
-                if (sideBlocks(ray, q / a, tMax) || sideBlocks(ray, c / q, tMax)) {
-                    return true;
-                }
+            if (!(discriminant > 0)) {
+                return false; // tangent to the side, or past it: touches or misses (see nearestOnSide)
             }
+            double c = ray.ox * ray.ox + ray.oz * ray.oz - radius * radius;
+            double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
+            sideIn = Math.min(q / a, c / q);
+            sideOut = Math.max(q / a, c / q);
+        } else if (!closed || !(ray.ox * ray.ox + ray.oz * ray.oz < radius * radius)) {
+            return false;
         }
-        return closed && ray.dy != 0 && (capBlocks(ray, y0, tMax) || capBlocks(ray, y1, tMax));
+        if (!closed) {
+            return sideBlocks(ray, sideIn, tMax) || sideBlocks(ray, sideOut, tMax);
+        }
+        double capIn = Double.NEGATIVE_INFINITY;
+        double capOut = Double.POSITIVE_INFINITY;
+        if (ray.dy != 0) {
+            double tBottom = (y0 - ray.oy) / ray.dy;
+            double tTop = (y1 - ray.oy) / ray.dy;
+            capIn = Math.min(tBottom, tTop);
+            capOut = Math.max(tBottom, tTop);
+        } else if (!(ray.oy > y0 && ray.oy < y1)) {
+            return false;
+        }
+        double in = Math.max(sideIn, capIn);
+        double out = Math.min(sideOut, capOut);
+        if (!(in < out)) {
+            return false;
+        }
+        boolean entry = capIn >= sideIn ? capBlocks(ray, in, tMax) : sideBlocks(ray, in, tMax);
+        return entry || (capOut <= sideOut ? capBlocks(ray, out, tMax) : sideBlocks(ray, out, tMax));
     }
 
     /**
-     * The side's crossing at t blocks unless it is shown to touch an end: with x, z the point's
-     * coordinates, g = x^2 + z^2 - r^2 has slope 2 (x dx + z dz), and the exact root lies within
-     * 2 |g| / |slope| of t while 2 a delta &lt; |slope| (as for the sphere).
+     * The side's crossing at t (of the open cylinder: within the heights) blocks unless it is
+     * shown to touch an end: with x, z the point's coordinates, g = x^2 + z^2 - r^2 has slope
+     * 2 (x dx + z dz), and the exact root lies within 2 |g| / |slope| of t while
+     * 2 a delta &lt; |slope| (as for the sphere).
      */
     private boolean sideBlocks(Ray ray, double t, double tMax) {
-        if (!(t > 0 && t < tMax && withinHeight(ray.atY(t)))) {
+        if (!(t > 0 && t < tMax) || !closed && !withinHeight(ray.atY(t))) {
             return false;
         }
         double x = ray.atX(t);
@@ -208,14 +233,13 @@ public final class Cylinder extends GeometricObject {
     }
 
     /**
-     * The cap at height y blocks when the ray crosses it inside the disk, certainly between its
-     * ends: t = (y - oy) / dy is off by gamma(2) of itself, and by (originError + t directionError)
-     * / |dy| from the ray's own errors.
+     * A cap's crossing at t = (y - oy) / dy blocks when it is certainly between the ray's ends: t
+     * is off by gamma(2) of itself, and by (originError + t directionError) / |dy| from the ray's
+     * own errors.
      */
-    private boolean capBlocks(Ray ray, double y, double tMax) {
-        double t = (y - ray.oy) / ray.dy;
+    private static boolean capBlocks(Ray ray, double t, double tMax) {
         double margin = Rounding.gamma(2) * Math.abs(t) + (ray.originError + Math.abs(t) * ray.directionError) / Math.abs(ray.dy);
-        return t - margin > 0 && tMax - t - margin > 0 && withinDisk(ray, t);
+        return t - margin > 0 && tMax - t - margin > 0;
     }
 
     @Override

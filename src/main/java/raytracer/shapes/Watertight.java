@@ -66,7 +66,7 @@ public final class Watertight {
         double sz = ray.sz();
         double det = u + w1 + w2;
         double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
-        double deltaT = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t);
+        double deltaT = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t, 0);
         // deltaT < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
         if (!(t > deltaT & tMax - t > 0)) {
             return Double.POSITIVE_INFINITY;
@@ -123,7 +123,7 @@ public final class Watertight {
         double perUnit = Math.abs(sz) + 2 * (Math.abs(nx) + Math.abs(ny)) / Math.abs(det);
         // the shear stands for a direction off d by about 2u |d_kz| = 2u / |sz| per axis
         double directionError = ray.directionError() + Rounding.gamma(2) / Math.abs(sz);
-        double margin = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t)
+        double margin = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t, Double.POSITIVE_INFINITY)
                         + (ray.originError() + t * directionError) * perUnit;
         return t - margin > 0 && tMax - t - margin > 0;
     }
@@ -134,11 +134,15 @@ public final class Watertight {
      * denominator's error included): X, Y, Z bound the sheared coordinates, deltaX, deltaY,
      * deltaZ their rounding, deltaE that of each edge function; then the numerator
      * sum e_i sz z_i and the determinant sum e_i carry deltaN and deltaDet, and t = N / det is off
-     * by (deltaN + |t| deltaDet) / (|det| - deltaDet) plus its own rounding. +infinity when the
-     * determinant's sign is not certain (the ray runs in the triangle's plane).
+     * by (deltaN + |t| deltaDet) / (|det| - deltaDet) plus its own rounding. {@code uncertain}
+     * when the determinant's sign is not certain, the ray running in the triangle's plane to
+     * rounding: there no bound holds, and the closest hit keeps the paper's test (0: a grazing ray
+     * still hits the face it comes from, and meets a mesh's triangles as watertight as before)
+     * while a shadow ray is not blocked (+infinity).
      */
     private static double tError(double ax, double ay, double az, double bx, double by, double bz, double cx,
-                                 double cy, double cz, double u, double w1, double w2, double sz, double det, double t) {
+                                 double cy, double cz, double u, double w1, double w2, double sz, double det, double t,
+                                 double uncertain) {
         double x = Math.abs(ax) + Math.abs(bx) + Math.abs(cx);
         double y = Math.abs(ay) + Math.abs(by) + Math.abs(cy);
         double z = Math.abs(az) + Math.abs(bz) + Math.abs(cz);
@@ -152,8 +156,7 @@ public final class Watertight {
         double deltaDet = 3 * deltaE + Rounding.gamma(2) * e;
         double denominator = Math.abs(det) - deltaDet;
         double absT = Math.abs(t);
-        return denominator > 0 ? (deltaN + absT * deltaDet) / denominator + Rounding.gamma(1) * absT
-                               : Double.POSITIVE_INFINITY;
+        return denominator > 0 ? (deltaN + absT * deltaDet) / denominator + Rounding.gamma(1) * absT : uncertain;
     }
 
     /**

@@ -249,16 +249,14 @@ class SpawnRayTest {
     }
 
     /**
-     * Every kind whose rays all leave at every scale today. Left out: instanced spheres and
-     * cylinders, 0.9% and 0.4% of whose spawned rays find their surface again even with the push
-     * (the instance takes the offset origin into the object's space with a rounding the world-space
-     * error bound does not cover), and triangles (3 in 64,162 hits), whose intersection test is being
-     * given conservative bounds on t.
+     * Every kind, at every scale and offset. Instanced spheres and cylinders found their surface
+     * again in 0.9% and 0.4% of spawned rays until an instance's hit error bound took in the
+     * inverse's rounding (Instance.toWorld), and triangles in 3 of 64,162 until the watertight test
+     * rejected a t within its own rounding (Watertight).
      */
     @Test
     void spawnedRaysLeaveTheirSurfaceAtEveryScaleAndOffset() {
-        List<Kind> kinds = List.of(Kind.SPHERE, Kind.PLANE, Kind.BOX, Kind.CYLINDER, Kind.DISK, Kind.RECTANGLE,
-                                   Kind.INSTANCED_BOX, Kind.INSTANCED_DISK, Kind.INSTANCED_RECTANGLE);
+        List<Kind> kinds = List.of(Kind.values());
         for (Kind kind : kinds) {
             SplittableRandom r = new SplittableRandom(kind.ordinal() * 7919L + 11);
             int hits = 0;
@@ -273,7 +271,7 @@ class SpawnRayTest {
                     }
                 }
             }
-            assertTrue(hits > 5_000, kind + ": only " + hits + " hits");
+            assertTrue(hits > 3_000, kind + ": only " + hits + " hits");
             assertEquals(List.of(), failures, kind + ", " + failures.size() + " of " + hits + " hits");
         }
     }
@@ -311,8 +309,13 @@ class SpawnRayTest {
         double hx = sr.hitPoint.x;
         double hy = sr.hitPoint.y;
         double hz = sr.hitPoint.z;
+        double nx = sr.geometricNormal.x;
+        double ny = sr.geometricNormal.y;
+        double nz = sr.geometricNormal.z;
         ShadeRec again = hit(object, spawned, second);
-        if (again != null) {
+        // another face met near an edge of a box is the shape, not its own surface found again
+        boolean otherFace = again != null && Math.abs(again.geometricNormal.dot(nx, ny, nz)) < 0.5;
+        if (again != null && !otherFace) {
             double dx = again.hitPoint.x - hx;
             double dy = again.hitPoint.y - hy;
             double dz = again.hitPoint.z - hz;
