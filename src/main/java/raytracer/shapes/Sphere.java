@@ -53,20 +53,43 @@ public final class Sphere extends GeometricObject {
     /**
      * True when the ray crosses the sphere in (0, tMax), unless each crossing found there is shown
      * to lie within rounding of an end ({@link #touchesAnEnd}): a sphere through the light's point
-     * touches the shadow ray's end and does not block it.
+     * touches the shadow ray's end and does not block it. A ray whose two crossings both lie
+     * between its ends passes through the ball there and is blocked without that test: the usual
+     * case of a sphere casting a shadow.
      */
     @Override
     public boolean shadowHit(Ray ray, double tMax, ShadeRec sr) {
-        double t = nearestRoot(ray, tMax);
-        if (!(t < tMax)) {
+        // the roots as nearestRoot finds them
+        double fx = ray.ox - cx;
+        double fy = ray.oy - cy;
+        double fz = ray.oz - cz;
+        double a = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
+        double halfB = fx * ray.dx + fy * ray.dy + fz * ray.dz;
+        double s = halfB / a;
+        double lx = fx - s * ray.dx;
+        double ly = fy - s * ray.dy;
+        double lz = fz - s * ray.dz;
+        double r2 = radius * radius;
+        double discriminant = r2 - (lx * lx + ly * ly + lz * lz);
+        if (!(discriminant > 0)) {
             return false;
         }
-        if (!touchesAnEnd(ray, t, tMax)) {
+        double ff = fx * fx + fy * fy + fz * fz;
+        double c = ff - r2;
+        if (Math.abs(c) < C_RECOMPUTE * (ff + r2)) {
+            c = exactC(ray);
+        }
+        double q = -halfB - Math.copySign(Math.sqrt(a * discriminant), halfB);
+        double t0 = q / a;
+        double t1 = c / q;
+        double tNear = Math.min(t0, t1);
+        double tFar = Math.max(t0, t1);
+        boolean nearWithin = tNear > 0 && tNear < tMax;
+        boolean farWithin = tFar > 0 && tFar < tMax;
+        if (nearWithin && farWithin) {
             return true;
         }
-        // the near crossing touches an end: the far one may still lie between them
-        double far = nearestRoot(ray, tMax, t);
-        return far < tMax && !touchesAnEnd(ray, far, tMax);
+        return nearWithin ? !touchesAnEnd(ray, tNear, tMax) : farWithin && !touchesAnEnd(ray, tFar, tMax);
     }
 
     /**
@@ -121,11 +144,6 @@ public final class Sphere extends GeometricObject {
      * its precision when the sphere is small and far from the ray origin.
      */
     private double nearestRoot(Ray ray, double tMax) {
-        return nearestRoot(ray, tMax, 0);
-    }
-
-    /** As {@link #nearestRoot(Ray, double)}, for roots in (tMin, tMax). */
-    private double nearestRoot(Ray ray, double tMax, double tMin) {
         double fx = ray.ox - cx;
         double fy = ray.oy - cy;
         double fz = ray.oz - cz;
@@ -159,10 +177,10 @@ public final class Sphere extends GeometricObject {
         double t1 = c / q;
         double tNear = Math.min(t0, t1);
         double tFar = Math.max(t0, t1);
-        if (tNear > tMin && tNear < tMax) {
+        if (tNear > 0 && tNear < tMax) {
             return tNear;
         }
-        if (tFar > tMin && tFar < tMax) {
+        if (tFar > 0 && tFar < tMax) {
             return tFar;
         }
         return Double.POSITIVE_INFINITY;
