@@ -26,6 +26,15 @@ public final class GlossySpecular implements BRDF {
 
     @Override
     public void f(ShadeRec sr, MutableVec3 wo, MutableVec3 wi, MutableRgb out) {
+        out.set(cs).scale(scale * cosPower(sr, wo, wi));
+    }
+
+    /**
+     * cos^e(alpha), alpha between wo and the mirror direction r of wi, or 0 past 90 degrees: the
+     * factor {@link #f} and {@link #pdf} share (alpha is also the angle between wi and the mirror
+     * direction of wo), so that one power serves both.
+     */
+    public double cosPower(ShadeRec sr, MutableVec3 wo, MutableVec3 wi) {
         MutableVec3 n = sr.normal;
         double nDotWi = n.dot(wi);
         // r = -wi + 2 (n . wi) n
@@ -33,11 +42,7 @@ public final class GlossySpecular implements BRDF {
         double ry = -wi.y + 2 * nDotWi * n.y;
         double rz = -wi.z + 2 * nDotWi * n.z;
         double rDotWo = rx * wo.x + ry * wo.y + rz * wo.z;
-        if (rDotWo > 0) {
-            out.set(cs).scale(scale * Math.pow(rDotWo, exp));
-        } else {
-            out.setBlack();
-        }
+        return rDotWo > 0 ? Math.pow(rDotWo, exp) : 0;
     }
 
     /**

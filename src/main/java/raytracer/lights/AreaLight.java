@@ -113,25 +113,16 @@ public final class AreaLight extends Light {
 
     /**
      * The shadow ray ends at the sample's point moved off the emitter, towards its emitting side
-     * where the hit lies, by the point's error bound along the normal and one ulp more (as
-     * {@link ShadeRec#spawnRay} moves the hit's end): a surface in the light's plane, such as a
-     * ceiling around its lamp, then lies beyond the ray's end and does not block it.
+     * where the hit lies, beyond the point's error bound ({@link Emitter#moveOff}), as
+     * {@link ShadeRec#spawnRay} moves the hit's end: a surface in the light's plane, such as a
+     * ceiling around its lamp, then lies beyond the ray's end and does not block it. The sample's
+     * point in sr is moved in place: this is its last use.
      */
     @Override
     public boolean inShadow(ShadeRec sr, double distance) {
         MutableVec3 q = sr.lightPoint;
-        MutableVec3 n = sr.lightNormal;
-        double e = emitter.pointError() * (Math.abs(n.x) + Math.abs(n.y) + Math.abs(n.z));
-        double qx = awayBy(q.x, e * n.x);
-        double qy = awayBy(q.y, e * n.y);
-        double qz = awayBy(q.z, e * n.z);
-        return sr.world.shadowHit(sr.spawnRayTo(qx, qy, qz, sr.scratch.shadowRay), 1, sr);
-    }
-
-    /** value + offset, rounded one ulp further in the offset's direction. */
-    private static double awayBy(double value, double offset) {
-        double moved = value + offset;
-        return offset > 0 ? Math.nextUp(moved) : offset < 0 ? Math.nextDown(moved) : moved;
+        emitter.moveOff(q, sr.lightNormal);
+        return sr.world.shadowHit(sr.spawnRayTo(q.x, q.y, q.z, sr.scratch.shadowRay), 1, sr);
     }
 
     /** 1 / area: every sample is drawn uniformly over the emitter's surface. */

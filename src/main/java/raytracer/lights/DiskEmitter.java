@@ -28,13 +28,16 @@ final class DiskEmitter implements Emitter {
     }
 
     /**
-     * The concentric map's sines and cosines, the products and sums, and the stored basis, whose
-     * e1 and e2 are perpendicular to the normal only to rounding: well within gamma(16) of the
-     * centre's size plus the radius.
+     * By the sample's error bound along the normal: the concentric map's sines and cosines, the
+     * products and sums, and the stored basis, whose e1 and e2 are perpendicular to the normal only
+     * to rounding, are well within gamma(16) of the centre's size plus the radius; plus two ulps of
+     * that size, so that adding the move cannot round it away.
      */
     @Override
-    public double pointError() {
-        return Rounding.gamma(16) * (Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius);
+    public void moveOff(MutableVec3 point, MutableVec3 n) {
+        double size = Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius;
+        double move = Rounding.gamma(16) * size * (Math.abs(n.x) + Math.abs(n.y) + Math.abs(n.z)) + 0x1.0p-51 * size;
+        point.set(point.x + move * n.x, point.y + move * n.y, point.z + move * n.z);
     }
 
     @Override

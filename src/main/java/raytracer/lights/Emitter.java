@@ -12,10 +12,12 @@ interface Emitter {
     double area();
 
     /**
-     * A bound, on every axis, on how far a point written by {@link #sample} may lie from the exact
-     * surface the scene describes: the rounding of the sample's arithmetic.
+     * Moves {@code point}, written by {@link #sample} with {@code normal}, off the emitter along the
+     * normal, to the emitting side, beyond every point within the sample's rounding of the exact
+     * surface the scene describes (and beyond the rounding of the move itself): a shadow ray that
+     * ends there ends short of any surface in the emitter's plane.
      */
-    double pointError();
+    void moveOff(MutableVec3 point, MutableVec3 normal);
 
     /** A box around every point of the emitter. */
     BBox bounds();

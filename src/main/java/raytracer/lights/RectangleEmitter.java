@@ -13,7 +13,10 @@ final class RectangleEmitter implements Emitter {
     private final Vector3D b;
     private final Vector3D normal;
     private final double area;
-    private final double pointError;
+    /** The move off the emitter along the normal ({@link #moveOff}), the same for every sample. */
+    private final double offX;
+    private final double offY;
+    private final double offZ;
 
     RectangleEmitter(Point3D corner, Vector3D a, Vector3D b) {
         Vector3D n = a.cross(b);
@@ -25,16 +28,22 @@ final class RectangleEmitter implements Emitter {
         this.b = b;
         this.area = n.length();
         this.normal = n.normalize();
-        // corner + u a + v b with u, v in [0, 1): two products and two sums per axis
+        // corner + u a + v b with u, v in [0, 1): two products and two sums per axis, gamma(4) of
+        // the largest sum of magnitudes; projected on the normal, plus two ulps of the largest
+        // coordinate, so that adding the move cannot round it away
         double largest = Math.max(Math.abs(corner.x()) + Math.abs(a.x()) + Math.abs(b.x()),
                                   Math.max(Math.abs(corner.y()) + Math.abs(a.y()) + Math.abs(b.y()),
                                            Math.abs(corner.z()) + Math.abs(a.z()) + Math.abs(b.z())));
-        this.pointError = Rounding.gamma(4) * largest;
+        Vector3D u = normal;
+        double move = Rounding.gamma(4) * largest * (Math.abs(u.x()) + Math.abs(u.y()) + Math.abs(u.z())) + 0x1.0p-51 * largest;
+        this.offX = move * u.x();
+        this.offY = move * u.y();
+        this.offZ = move * u.z();
     }
 
     @Override
-    public double pointError() {
-        return pointError;
+    public void moveOff(MutableVec3 point, MutableVec3 n) {
+        point.set(point.x + offX, point.y + offY, point.z + offZ);
     }
 
     @Override

@@ -22,10 +22,16 @@ final class SphereEmitter implements Emitter {
         this.radius = radius;
     }
 
-    /** The unit vector from a square root, a sine and a cosine, times the radius, plus the centre: within gamma(16) of their sizes. */
+    /**
+     * By the sample's error bound along the normal: the unit vector from a square root, a sine and
+     * a cosine, times the radius, plus the centre, is within gamma(16) of their sizes; plus two
+     * ulps of that size, so that adding the move cannot round it away.
+     */
     @Override
-    public double pointError() {
-        return Rounding.gamma(16) * (Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius);
+    public void moveOff(MutableVec3 point, MutableVec3 n) {
+        double size = Math.max(Math.abs(center.x()), Math.max(Math.abs(center.y()), Math.abs(center.z()))) + radius;
+        double move = Rounding.gamma(16) * size * (Math.abs(n.x) + Math.abs(n.y) + Math.abs(n.z)) + 0x1.0p-51 * size;
+        point.set(point.x + move * n.x, point.y + move * n.y, point.z + move * n.z);
     }
 
     @Override

@@ -221,8 +221,6 @@ final class DirectLighting {
      * G / pdf, {@code weight} 1 / samples and {@code samples} the light's sample count at this hit.
      * The unshadowed contribution is computed first: when it could not change the pixel by the
      * cutoff (Hall and Greenberg 1983), the shadow ray is not traced and the sample is left out.
-     * A glossy reflector's lobe term is weighed against its glossy rays ({@link GlossyLightMis});
-     * 1 / g is the sample's density over solid angle.
      */
     private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, int samples,
                            MutableRgb out) {
@@ -242,12 +240,11 @@ final class DirectLighting {
             diffuse.f(sr, sr.wo, wi, f);
         }
         light.L(sr, incident);
-        double lobeWeight = mis != null && light.hasExtent() ? mis.lightSampleWeight(sr, light, 1 / g, samples) : 1;
         if (terms == Terms.REPORT) {
             f.scale(Math.PI * nDotWi);
-            addLobe(sr, lobe, f, lobeWeight);
+            addLobe(sr, light, lobe, g, samples, f);
         } else {
-            addLobe(sr, lobe, f, lobeWeight);
+            addLobe(sr, light, lobe, g, samples, f);
             f.scale(nDotWi);
         }
         // f L g, with f now holding the factor that reaches the viewer, is this sample's estimate of
@@ -267,14 +264,20 @@ final class DirectLighting {
         out.addProduct(f, incident, g * weight);
     }
 
-    private void addLobe(ShadeRec sr, BRDF lobe, MutableRgb f, double lobeWeight) {
+    /**
+     * Adds the lobe's value for the sample to f: a glossy reflector's weighed against its glossy
+     * rays for a light with extent ({@link GlossyLightMis}; 1 / g is the sample's density over
+     * solid angle, {@code samples} the light's count at this hit).
+     */
+    private void addLobe(ShadeRec sr, Light light, BRDF lobe, double g, int samples, MutableRgb f) {
         if (lobe != null && specularZero) {
             sr.scratch.skipped[Skipped.SPECULAR_LOBES]++;
         } else if (lobe != null) {
             MutableRgb fs = sr.scratch.specularScratch;
-            lobe.f(sr, sr.wo, sr.wi, fs);
-            if (lobeWeight != 1) {
-                fs.scale(lobeWeight);
+            if (mis != null && light.hasExtent()) {
+                mis.weightedLobe(sr, light, 1 / g, samples, fs);
+            } else {
+                lobe.f(sr, sr.wo, sr.wi, fs);
             }
             f.add(fs);
         }

@@ -4,6 +4,7 @@ import raytracer.brdf.GlossySpecular;
 import raytracer.core.Light;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
+import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 import raytracer.math.RGBColor;
 
@@ -46,12 +47,24 @@ final class GlossyLightMis {
     }
 
     /**
-     * The weight of the lobe's term for a sample of {@code light} in direction sr.wi, which the
-     * light's sampling drew {@code lightSamples} times at this hit with solid-angle density
-     * {@code lightPdf}. 1 unless a glossy ray in that direction would be traced and could find
-     * the light's surface.
+     * Writes into {@code fs} the lobe's value f for a sample of {@code light} in direction sr.wi,
+     * weighed against the glossy rays: the light's sampling drew it {@code lightSamples} times at
+     * this hit with solid-angle density {@code lightPdf}. The weight is 1 unless a glossy ray in
+     * that direction would be traced and could find the light's surface. One power of the cosine
+     * serves f and the rays' density (GlossySpecular.cosPower).
      */
-    double lightSampleWeight(ShadeRec sr, Light light, double lightPdf, int lightSamples) {
+    void weightedLobe(ShadeRec sr, Light light, double lightPdf, int lightSamples, MutableRgb fs) {
+        double cosPower = lobe.cosPower(sr, sr.wo, sr.wi);
+        fs.set(lobe.cs()).scale(lobe.scale() * cosPower);
+        if (cosPower > 0) {
+            double w = lightSampleWeight(sr, light, lightPdf, lightSamples, cosPower);
+            if (w != 1) {
+                fs.scale(w);
+            }
+        }
+    }
+
+    private double lightSampleWeight(ShadeRec sr, Light light, double lightPdf, int lightSamples, double cosPower) {
         if (!light.canBeHit() || sr.depth + 1 > sr.world.viewPlane().maxDepth()) {
             return 1;
         }
@@ -68,7 +81,8 @@ final class GlossyLightMis {
         if (!policy.wouldTrace(sr.depth, cs.r() * k / n, cs.g() * k / n, cs.b() * k / n)) {
             return 1;
         }
-        return powerHeuristic(lightSamples * lightPdf, n * lobe.pdf(sr, sr.wo, wi));
+        double glossyPdf = (lobe.exp() + 1) / (2 * Math.PI) * cosPower;
+        return powerHeuristic(lightSamples * lightPdf, n * glossyPdf);
     }
 
     /**

@@ -86,6 +86,9 @@ public final class Box extends GeometricObject {
         if (!(tNear < tFar)) {
             return false;
         }
+        if (tNear > 0 && tFar < tMax) {
+            return true; // through the box between the ends: the usual shadow, whatever the rounding at either face
+        }
         double dNear = tNear == txNear ? ray.dx : tNear == tyNear ? ray.dy : ray.dz;
         double dFar = tFar == txFar ? ray.dx : tFar == tyFar ? ray.dy : ray.dz;
         return certainlyWithin(ray, tNear, dNear, tMax) || certainlyWithin(ray, tFar, dFar, tMax);

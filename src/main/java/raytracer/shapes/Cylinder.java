@@ -198,6 +198,9 @@ public final class Cylinder extends GeometricObject {
         if (!(in < out)) {
             return false;
         }
+        if (in > 0 && out < tMax) {
+            return true; // through the solid between the ends
+        }
         boolean entry = capIn >= sideIn ? capBlocks(ray, in, tMax) : sideBlocks(ray, in, tMax);
         return entry || (capOut <= sideOut ? capBlocks(ray, out, tMax) : sideBlocks(ray, out, tMax));
     }

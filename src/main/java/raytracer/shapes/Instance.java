@@ -26,6 +26,9 @@ public final class Instance extends GeometricObject implements LocalFrame {
     private final double inverseError;
     /** The infinity norm of the inverse's linear part. */
     private final double inverseNorm;
+    /** The largest magnitude of the matrix's translation, and of the inverse's. */
+    private final double translation;
+    private final double inverseTranslation;
 
     public Instance(GeometricObject object, Matrix4 transform) {
         this(object, transform, transform.inverse());
@@ -35,8 +38,12 @@ public final class Instance extends GeometricObject implements LocalFrame {
         this.object = object;
         this.forward = forward;
         this.inverse = inverse;
-        this.inverseError = forward.inverseError(inverse);
+        // a matrix too ill-conditioned for any bound (rho infinite): its object is tested as if the ray were exact
+        double rho = forward.inverseError(inverse);
+        this.inverseError = Double.isFinite(rho) ? rho : 0;
         this.inverseNorm = norm(inverse);
+        this.translation = Math.max(Math.abs(forward.get(0, 3)), Math.max(Math.abs(forward.get(1, 3)), Math.abs(forward.get(2, 3))));
+        this.inverseTranslation = Math.max(Math.abs(inverse.get(0, 3)), Math.max(Math.abs(inverse.get(1, 3)), Math.abs(inverse.get(2, 3))));
     }
 
     /** The same instance of the object prepared, when preparing made a new one (a mesh's BVH). */
@@ -80,7 +87,6 @@ public final class Instance extends GeometricObject implements LocalFrame {
         }
         double a = norm(forward);
         double aInverse = norm(inverse);
-        double translation = Math.max(Math.abs(forward.get(0, 3)), Math.max(Math.abs(forward.get(1, 3)), Math.abs(forward.get(2, 3))));
         double reach = Math.max(boundingBox().maxAbs(), translation);
         List<HalfSpace> local = new ArrayList<>(volume.size());
         for (HalfSpace face : volume) {
@@ -139,40 +145,27 @@ public final class Instance extends GeometricObject implements LocalFrame {
 
     /**
      * Bounds how far the object-space ray is from the exact inverse image of {@code ray}, so that
-     * the object's shadow test widens its bounds on t by them. The computed inverse maps o to
-     * A~ o + t~ with t~ = -A~ t computed; against A^-1 (o - t) that is off by the inverse's error
-     * (rho |A~| (|o| + |t|)), the rounding of both products (gamma(3) each) and the world ray's
-     * own errors carried through A~; a direction has no translation.
+     * the object's shadow test widens its bounds on t by them: the origin by {@link #localError},
+     * the direction by the inverse's error and one product's rounding, (rho + gamma(3)) |A~| |d|
+     * (no translation), and the world ray's own errors carried through A~.
      */
     private void setErrors(Ray world, Ray local) {
-        double direction = 0;
-        for (int row = 0; row < 3; row++) {
-            double d = Math.abs(inverse.get(row, 0) * world.dx) + Math.abs(inverse.get(row, 1) * world.dy)
-                       + Math.abs(inverse.get(row, 2) * world.dz);
-            direction = Math.max(direction, d);
-        }
+        double direction = Math.max(Math.abs(world.dx), Math.max(Math.abs(world.dy), Math.abs(world.dz)));
         double grow = 1 + Rounding.gamma(3);
         double originError = grow * inverseNorm * world.originError + localError(world.ox, world.oy, world.oz);
-        double directionError = grow * inverseNorm * world.directionError + (inverseError + Rounding.gamma(3)) * direction;
-        // a matrix too ill-conditioned for any bound: its object is tested as if the ray were exact
-        if (Double.isFinite(originError + directionError)) {
-            local.setErrors(originError, directionError);
-        }
+        double directionError = grow * inverseNorm * world.directionError + (inverseError + Rounding.gamma(3)) * inverseNorm * direction;
+        local.setErrors(originError, directionError);
     }
 
     /**
      * How far, on every axis, the object-space image of the world point p computed through the
-     * inverse may be from the exact one: (rho + gamma(4)) max_i (sum_j |A~_ij| (|p_j| + |t_j|) + |t~_i|).
+     * inverse may be from the exact one: A~ p + t~ against A^-1 (p - t), off by the inverse's error
+     * and the rounding of both products, (rho + gamma(4)) (|A~| (|p| + |t|) + |t~|), bounded with
+     * infinity norms.
      */
     private double localError(double px, double py, double pz) {
-        double largest = 0;
-        for (int row = 0; row < 3; row++) {
-            double o = Math.abs(inverse.get(row, 0)) * (Math.abs(px) + Math.abs(forward.get(0, 3)))
-                       + Math.abs(inverse.get(row, 1)) * (Math.abs(py) + Math.abs(forward.get(1, 3)))
-                       + Math.abs(inverse.get(row, 2)) * (Math.abs(pz) + Math.abs(forward.get(2, 3))) + Math.abs(inverse.get(row, 3));
-            largest = Math.max(largest, o);
-        }
-        return (inverseError + Rounding.gamma(4)) * largest;
+        double p = Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)));
+        return (inverseError + Rounding.gamma(4)) * (inverseNorm * (p + translation) + inverseTranslation);
     }
 
     @Override

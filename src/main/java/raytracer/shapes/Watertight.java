@@ -65,10 +65,19 @@ public final class Watertight {
         }
         double sz = ray.sz();
         double det = u + w1 + w2;
-        double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
-        double deltaT = tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t, 0);
-        // deltaT < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
-        if (!(t > deltaT & tMax - t > 0)) {
+        // the corners' depths along the ray: t, their average weighted by the edge functions, lies among them
+        double za = sz * az;
+        double zb = sz * bz;
+        double zc = sz * cz;
+        double t = (u * za + w1 * zb + w2 * zc) / det;
+        // 0 < t < tMax as one test (a NaN fails it): with gradual underflow tMax - t > 0 exactly when t < tMax
+        if (!(t > 0 & tMax - t > 0)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        // a triangle wholly ahead (every corner's depth positive, a sign rounding keeps) is met at
+        // t > 0 in exact arithmetic too; one that reaches back to the origin is met only beyond
+        // the rounding of t: the ray may have started on it
+        if (!(za > 0 & zb > 0 & zc > 0) && !(t > tError(ax, ay, az, bx, by, bz, cx, cy, cz, u, w1, w2, sz, det, t, 0))) {
             return Double.POSITIVE_INFINITY;
         }
         sr.b1 = w1 / det;
@@ -112,9 +121,27 @@ public final class Watertight {
         }
         double sz = ray.sz();
         double det = u + w1 + w2;
-        double t = (u * (sz * az) + w1 * (sz * bz) + w2 * (sz * cz)) / det;
+        double za = sz * az;
+        double zb = sz * bz;
+        double zc = sz * cz;
+        double t = (u * za + w1 * zb + w2 * zc) / det;
         if (!(t > 0 & tMax - t > 0)) {
             return false;
+        }
+        // Where the exact ray meets the triangle, its t is that point's depth (p_kz - o_kz) / d_kz,
+        // within the corners' depths as the exact ray sees them: each computed one off by gamma(2)
+        // of itself, plus originError |sz| from the origin, and divided by 1 -+ directionError |sz|
+        // for the direction. A triangle whose corners all lie certainly between the ends (an
+        // occluder in the middle of the ray: the usual case) blocks without the finer bound below.
+        double g2 = Rounding.gamma(2);
+        double absSz = Math.abs(sz);
+        double shift = ray.originError() * absSz;
+        double stretch = ray.directionError() * absSz;
+        double nearest = Math.min(za, Math.min(zb, zc));
+        double farthest = Math.max(za, Math.max(zb, zc));
+        if (stretch < 1 && (nearest - g2 * Math.abs(nearest) - shift) / (1 + stretch) > 0
+            && (farthest + g2 * Math.abs(farthest) + shift) / (1 - stretch) < tMax) {
+            return true;
         }
         // the ray moved by a vector of at most e per axis moves the crossing by at most
         // e (|sz| + 2 (|N'x| + |N'y|) / |N'z|), N' the normal in the sheared frame (|sx|, |sy| <= 1)
