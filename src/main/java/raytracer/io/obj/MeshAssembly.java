@@ -1,6 +1,7 @@
 package raytracer.io.obj;
 
 import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.SmoothNormals;
 
 /**
  * Turns the parsed corner triples into a {@link Mesh}: as is when corners are positions only,

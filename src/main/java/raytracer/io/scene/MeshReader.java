@@ -12,6 +12,9 @@ import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.io.obj.ObjModel;
+import raytracer.io.ply.PlyException;
+import raytracer.io.ply.PlyLoader;
+import raytracer.io.ply.PlyModel;
 import raytracer.materials.Dielectric;
 import raytracer.materials.Emissive;
 import raytracer.materials.Matte;
@@ -21,7 +24,7 @@ import raytracer.math.RGBColor;
 import raytracer.textures.ImageTexture;
 
 /**
- * A {@code mesh} object: an OBJ file under a BVH. Without a {@code material} key the file's MTL
+ * A {@code mesh} object: an OBJ or PLY file under a BVH. Without a {@code material} key the file's MTL
  * materials are used, mapped onto ours by {@link #fromMtl}.
  */
 final class MeshReader {
@@ -88,12 +91,25 @@ final class MeshReader {
         return mesh;
     }
 
+    /**
+     * The mesh file: OBJ, or PLY by its name ({@code .ply}, {@code .ply.gz}), the latter as a model
+     * with no materials (a PLY file has none: the object's material applies).
+     */
     static ObjModel parse(YamlObject o, Path file, boolean smooth) throws SceneException {
         try {
+            if (isPly(file)) {
+                PlyModel ply = PlyLoader.load(file, smooth);
+                return new ObjModel(ply.mesh(), List.of(), ply.warnings(), ply.faces(), ply.ngons(), List.of(), Set.of());
+            }
             return ObjLoader.load(file, smooth);
-        } catch (ObjException e) {
+        } catch (ObjException | PlyException e) {
             throw o.source().error(o.raw("file"), e.getMessage());
         }
+    }
+
+    static boolean isPly(Path file) {
+        String name = file.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        return name.endsWith(".ply") || name.endsWith(".ply.gz");
     }
 
     /** The mesh as loaded: what it renders (triangles, vertices) and how many faces were n-gons. */

@@ -1,15 +1,16 @@
-package raytracer.io.obj;
+package raytracer.shapes.mesh;
 
 /**
  * Vertex normals for a mesh that has none: each triangle adds its unit normal weighted by its
  * angle at the vertex (Thürmer and Wüthrich, "Computing vertex normals from polygonal facets",
  * 1998), which, unlike area weighting, does not depend on how a surface is cut into triangles.
  */
-final class SmoothNormals {
+public final class SmoothNormals {
     private SmoothNormals() {
     }
 
-    static float[] angleWeighted(double[] p, int[] triangles) {
+    /** One unit normal per vertex of the positions {@code p} (x, y, z each), for the triangles' vertex indices. */
+    public static float[] angleWeighted(double[] p, int[] triangles) {
         double[] sum = new double[p.length];
         for (int t = 0; t < triangles.length; t += 3) {
             int a = 3 * triangles[t];
