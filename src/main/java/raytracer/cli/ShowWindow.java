@@ -36,6 +36,7 @@ import raytracer.render.TileListener;
 final class ShowWindow implements TileListener, AutoCloseable {
     /** At most ten repaints a second: smooth enough to watch, and nothing a render could measure. */
     static final int REPAINT_MILLIS = 100;
+    private static final long TITLE_NANOS = 500_000_000L;
 
     private final String scene;
     private final Film film;
@@ -54,6 +55,7 @@ final class ShowWindow implements TileListener, AutoCloseable {
     private ShowPixels pixels;
     private Timer timer;
     private boolean done;
+    private long titled = Long.MIN_VALUE / 2;
 
     private ShowWindow(String scene, Film film, ShowTone tone, ShowTone last, DoubleSupplier progress, Runnable cancel) {
         this.scene = scene;
@@ -127,12 +129,22 @@ final class ShowWindow implements TileListener, AutoCloseable {
         shownTiles.addAll(fresh);
         for (int[] tile : again ? shownTiles : fresh) {
             int[] changed = pixels.update(film, tile[0], tile[1], tile[2], tile[3], tone);
-            picture.repaint(changed[0], changed[1], changed[2], changed[3]);
+            if (!again) {
+                picture.drawNow(changed);
+            }
         }
-        double f = progress.getAsDouble();
-        double seconds = (System.nanoTime() - start) / 1e9;
-        String left = f > 0.01 ? Progress.formatSeconds(seconds * (1 - f) / f) + " left" : "time left unknown";
-        frame.setTitle(String.format("%s: %.0f%%, %s", scene, 100 * f, left));
+        if (again) {
+            picture.repaint();
+        }
+        long now = System.nanoTime();
+        if (now - titled >= TITLE_NANOS) {
+            // a title took about 2 ms to set under Xvfb, four tiles' drawing: twice a second is enough to read
+            titled = now;
+            double f = progress.getAsDouble();
+            double seconds = (now - start) / 1e9;
+            String left = f > 0.01 ? Progress.formatSeconds(seconds * (1 - f) / f) + " left" : "time left unknown";
+            frame.setTitle(String.format("%s: %.0f%%, %s", scene, 100 * f, left));
+        }
     }
 
     /**
@@ -199,6 +211,20 @@ final class ShowWindow implements TileListener, AutoCloseable {
         @Override
         protected void paintComponent(Graphics g) {
             g.drawImage(image, 0, 0, null);
+        }
+
+        /**
+         * Draws the pixels of rectangle {x, y, width, height} straight to the screen, without
+         * Swing's repaint: repaint() would merge the tiles of a tick, spread over the image by the
+         * tile order, into one rectangle of nearly the whole image, and draw it through a back
+         * buffer.
+         */
+        void drawNow(int[] r) {
+            Graphics g = getGraphics();
+            if (g != null) {
+                g.drawImage(image, r[0], r[1], r[0] + r[2], r[1] + r[3], r[0], r[1], r[0] + r[2], r[1] + r[3], null);
+                g.dispose();
+            }
         }
     }
 }
