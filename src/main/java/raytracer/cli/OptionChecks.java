@@ -57,10 +57,17 @@ final class OptionChecks {
         if (o.noCache && o.cacheDir != null) {
             throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
         }
+        if (o.show) {
+            // AWT is loaded here only, and only for --show: a run without it loads no AWT class
+            String why = GraphicalDisplay.whyNone();
+            if (why != null) {
+                throw new ParameterException(commandLine, "--show needs a graphical display: " + why);
+            }
+        }
         Path meshCache = o.noCache ? null
             : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
         return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
-                                 meshCache);
+                                 meshCache, o.show);
     }
 
     private static boolean parseView(String view) {

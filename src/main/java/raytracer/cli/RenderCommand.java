@@ -97,6 +97,11 @@ public final class RenderCommand implements Callable<Integer> {
             description = "Render N times in this JVM and report each (benchmarking: the first render includes JIT warm-up).")
     int repeat = 1;
 
+    @Option(names = "--show",
+            description = "Show the image in a window as its tiles finish, as the file will hold it; the window stays "
+                          + "until Esc or closed. Esc or closing it during the render cancels the render, as Ctrl-C does.")
+    boolean show;
+
     @Option(names = "--stats", description = "Print a breakdown: load steps (parse, BVH build, mesh cache), render time, "
             + "rays by kind, BVH tests per ray, peak heap, and what the scene analysis left out and why.")
     boolean stats;

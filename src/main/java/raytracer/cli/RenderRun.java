@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 import java.util.List;
 import raytracer.accel.Aggregation;
 import raytracer.core.PixelFilter;
@@ -22,20 +21,23 @@ import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
 import raytracer.render.SceneAnalysis;
+import raytracer.render.TileListener;
 import raytracer.render.Workers;
 import raytracer.tracers.BvhCost;
 
 /**
  * One run of the command, on one pool of --threads workers: loads the scene and prepares it on the
  * pool (so that the OBJ parse and the BVH builds fork onto its workers), applies the command-line
- * overrides, renders --repeat times with a progress bar, and writes the image atomically.
- * {@link RunReport} prints what it did.
+ * overrides, renders --repeat times with a progress bar (and with --show a {@link ShowWindow}), and
+ * writes the image atomically. {@link RunReport} prints what it did.
  */
 final class RenderRun {
     static final String DEFAULT_SCENE_RESOURCE = "/raytracer/scenes/default.yaml";
 
     private final RenderRequest request;
     private final RunReport report;
+    /** The terminal's progress bar while the last render runs, for a cancel from the window to clear. */
+    private volatile Progress progress;
 
     RenderRun(RenderRequest request, PrintWriter err) {
         this.request = request;
@@ -74,36 +76,76 @@ final class RenderRun {
                 // counts per pixel, not averages blurred over the neighbours
                 world.setViewPlane(world.viewPlane().withFilter(PixelFilter.BOX));
             }
-            Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
-            RenderStats stats = render(new Renderer(world, rayTree, workers, request.seed()), film);
-            write(film, world.viewPlane(), encoding);
-            if (!request.quiet()) {
-                report.summary(stats, request.output(), world.viewPlane().filter());
-            }
-            if (request.stats()) {
-                report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
-                report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
-                    : "--no-skip: the scene analysis was off, the scene rendered as given");
+            ViewPlane vp = world.viewPlane();
+            Film film = new Film(vp.hres(), vp.vres());
+            // the file's codes: the cost view's false colour is written at exposure 1 through the sRGB curve
+            double exposure = request.costView() ? 1 : vp.exposure();
+            boolean srgb = request.costView() || encoding.srgbCurve();
+            Renderer renderer = new Renderer(world, rayTree, workers, request.seed());
+            // the window's type is named only here, so that without --show no AWT class is loaded
+            try (ShowWindow window = request.show() ? openWindow(renderer, film, exposure, srgb) : null) {
+                RenderStats stats = render(renderer, film, window);
+                Film written = write(film, vp, exposure, srgb);
+                if (window != null) {
+                    window.finish(written);
+                }
+                if (!request.quiet()) {
+                    report.summary(stats, request.output(), vp.filter());
+                }
+                if (request.stats()) {
+                    report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
+                    report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
+                        : "--no-skip: the scene analysis was off, the scene rendered as given");
+                }
+                if (window != null) {
+                    window.awaitClose();
+                }
             }
             return 0;
         }
     }
 
-    /** Renders into {@code film}, after --repeat - 1 renders of the same frame that only report. */
-    private RenderStats render(Renderer renderer, Film film) {
+    /** The --show window on {@code film}, coding pixels as the file will. */
+    private ShowWindow openWindow(Renderer renderer, Film film, double exposure, boolean srgb) throws Exception {
+        String scene = request.scene() == null ? "default scene" : request.scene().getFileName().toString();
+        return ShowWindow.open(scene, film, request.costView(), exposure, srgb, renderer::progress, this::cancel);
+    }
+
+    /**
+     * Esc or the close button during the render (or the write): the run stops as on SIGINT, by the
+     * same exit and status, so the shutdown hook deletes a temporary file being written and the
+     * earlier output stays.
+     */
+    private void cancel() {
+        Progress bar = progress;
+        if (bar != null) {
+            bar.close();
+        }
+        if (!request.quiet()) {
+            report.cancelled(request.output());
+        }
+        Runtime.getRuntime().exit(ErrorReport.INTERRUPTED);
+    }
+
+    /**
+     * Renders into {@code film}, after --repeat - 1 renders of the same frame that only report; the
+     * last render tells {@code preview} (if not null) of each finished tile.
+     */
+    private RenderStats render(Renderer renderer, Film film, TileListener preview) {
         for (int i = 1; i < request.repeat(); i++) {
             report.repeat(i, renderer.render(new Film(film.width(), film.height())));
         }
         RenderStats stats;
         if (!request.quiet() && System.console() != null) {
-            Progress progress = new Progress(System.err, renderer::progress);
+            progress = new Progress(System.err, renderer::progress);
             try {
-                stats = renderer.render(film);
+                stats = renderer.render(film, preview);
             } finally {
                 progress.close();
+                progress = null;
             }
         } else {
-            stats = renderer.render(film);
+            stats = renderer.render(film, preview);
         }
         if (request.repeat() > 1) {
             report.repeat(request.repeat(), stats);
@@ -111,17 +153,20 @@ final class RenderRun {
         return stats;
     }
 
-    /** Writes the shaded image, or the cost view's false colour with its legend. */
-    private void write(Film film, ViewPlane vp, DisplayEncoding encoding) throws IOException {
-        Path out = request.output();
-        if (!request.costView()) {
-            ImageWriters.write(film, vp.exposure(), encoding.srgbCurve(), out);
-            return;
+    /**
+     * Writes the shaded image, or the cost view's false colour with its legend; returns the film
+     * written (the false colour's, or {@code film}).
+     */
+    private Film write(Film film, ViewPlane vp, double exposure, boolean srgb) throws IOException {
+        Film written = film;
+        if (request.costView()) {
+            // the film holds each pixel's mean over its samples
+            double[] range = FalseColor.range(film);
+            report.costLegend(range, vp.numSamples());
+            written = FalseColor.apply(film, range[0], range[1]);
         }
-        // the film holds each pixel's mean over its samples
-        double[] range = FalseColor.range(film);
-        report.costLegend(range, vp.numSamples());
-        ImageWriters.write(FalseColor.apply(film, range[0], range[1]), 1, true, out);
+        ImageWriters.write(written, exposure, srgb, request.output());
+        return written;
     }
 
     private LoadedScene loadScene() throws SceneException, IOException {

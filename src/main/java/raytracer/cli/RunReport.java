@@ -43,6 +43,11 @@ final class RunReport {
                    range[0], range[1], samples == 1 ? "pixel" : "ray, averaged over each pixel");
     }
 
+    /** A render cancelled from the --show window; whatever {@code out} held before is kept. */
+    void cancelled(Path out) {
+        err.println("render: cancelled from the window; " + out + " left as it was");
+    }
+
     /** The summary line, naming the pixel filter when it is not the book's box (the image is then softer). */
     void summary(RenderStats s, Path out, PixelFilter filter) {
         err.println(summaryLine(s, out) + (filter.isBox() ? "" : String.format(", %s filter of radius %s pixels", filter.name(),

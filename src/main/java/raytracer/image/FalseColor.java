@@ -26,22 +26,31 @@ public final class FalseColor {
     /** A new film whose linear colours, once sRGB-encoded, show channel 0 of {@code film} on the ramp. */
     public static Film apply(Film film, double min, double max) {
         Film out = new Film(film.width(), film.height());
-        double span = max > min ? max - min : 1;
+        double[] c = new double[3];
         for (int y = 0; y < film.height(); y++) {
             for (int x = 0; x < film.width(); x++) {
-                double f = Math.max(0, Math.min(1, (film.get(x, y, 0) - min) / span));
-                double pos = f * (RAMP.length - 1);
-                int i = Math.min((int) pos, RAMP.length - 2);
-                double w = pos - i;
-                double[] c = new double[3];
-                for (int k = 0; k < 3; k++) {
-                    // interpolate in display space, then store linear so the PNG encoder restores it
-                    double display = (1 - w) * RAMP[i][k] + w * RAMP[i + 1][k];
-                    c[k] = ToneMap.srgbDecode(display);
-                }
+                color(film.get(x, y, 0), min, max, c);
                 out.set(x, y, c[0], c[1], c[2]);
             }
         }
         return out;
+    }
+
+    /**
+     * The linear colour that, once sRGB-encoded, shows {@code value} on the ramp from {@code min} to
+     * {@code max}, into {@code rgb[0 .. 3)}: one pixel of {@link #apply}, for a preview that colours
+     * tiles as they finish.
+     */
+    public static void color(double value, double min, double max, double[] rgb) {
+        double span = max > min ? max - min : 1;
+        double f = Math.max(0, Math.min(1, (value - min) / span));
+        double pos = f * (RAMP.length - 1);
+        int i = Math.min((int) pos, RAMP.length - 2);
+        double w = pos - i;
+        for (int k = 0; k < 3; k++) {
+            // interpolate in display space, then store linear so the PNG encoder restores it
+            double display = (1 - w) * RAMP[i][k] + w * RAMP[i + 1][k];
+            rgb[k] = ToneMap.srgbDecode(display);
+        }
     }
 }

@@ -1,6 +1,7 @@
 package raytracer.render;
 
 import raytracer.core.PixelFilter;
+import raytracer.image.Film;
 
 /**
  * The weighted sums that the samples of one tile leave, under a filter wider than a pixel, in the
@@ -72,6 +73,21 @@ final class FilteredTile {
      */
     void addBlack(int x, int y, double fx, double fy) {
         add(x, y, fx, fy, 0, 0, 0);
+    }
+
+    /**
+     * Writes to {@code film} each pixel of the tile (not its margin) from this tile's sums alone: a
+     * preview, exact where the neighbouring tiles' samples do not reach, until the render resolves
+     * every pixel. The pixel's own samples lie in this tile, so its summed weight is positive.
+     */
+    void estimate(Film film) {
+        for (int y = top + reach; y < top + rows - reach; y++) {
+            for (int x = left + reach; x < left + columns - reach; x++) {
+                int at = 4 * ((y - top) * columns + (x - left));
+                double w = sums[at + 3];
+                film.set(x, y, sums[at] / w, sums[at + 1] / w, sums[at + 2] / w);
+            }
+        }
     }
 
     /** The tile's first pixel column and row, without the margin. */

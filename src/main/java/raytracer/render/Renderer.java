@@ -42,6 +42,8 @@ public final class Renderer {
     private final ShadeRecSupply shadeRecs;
     private final AtomicLong pixelsDone = new AtomicLong();
     private volatile long pixelsTotal = 1;
+    /** Told of each finished tile during {@link #render(Film, TileListener)}; null for none. */
+    private TileListener tileListener;
 
     /** Renders {@code world}, tracing as much of each ray tree as {@code rayTree} asks, on {@code workers}. */
     public Renderer(World world, RayTreeSettings rayTree, Workers workers, long seed) {
@@ -75,6 +77,17 @@ public final class Renderer {
 
     /** Renders the whole image into {@code film} and returns what it cost. */
     public RenderStats render(Film film) {
+        return render(film, null);
+    }
+
+    /**
+     * As {@link #render(Film)}, telling {@code listener} (if not null) of each tile as it finishes.
+     * Under a filter wider than a pixel the film then holds each finished tile's estimate from its
+     * own samples until the end, when every pixel is resolved as without a listener: the image is
+     * the same.
+     */
+    public RenderStats render(Film film, TileListener listener) {
+        tileListener = listener; // seen by the workers: the pool's invoke happens after this write
         tables(); // made here, before the workers start, if the view plane changed since
         ViewPlane vp = world.viewPlane();
         List<int[]> tiles = tiles(vp.hres(), vp.vres());
@@ -258,6 +271,12 @@ public final class Renderer {
                     renderPixel(x, y, s, film, sums);
                 }
                 pixelsDone.addAndGet(tile[2] - tile[0]);
+            }
+            if (tileListener != null) {
+                if (sums != null) {
+                    sums.estimate(film);
+                }
+                tileListener.tileDone(tile[0], tile[1], tile[2], tile[3]);
             }
         }
     }

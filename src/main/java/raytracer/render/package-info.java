@@ -3,6 +3,6 @@
  * loads the scene and builds its BVHs), tiles split over it, one {@link raytracer.core.WorkerScratch}
  * per worker thread, per-pixel seeded sampling (so the image is identical for any thread count),
  * the Gaussian filter's per-tile sums ({@link raytracer.render.FilteredTile}), added in tile order,
- * progress and statistics. Sees only the {@code core} interfaces.
+ * progress, finished tiles told to a preview ({@link raytracer.render.TileListener}) and statistics. Sees only the {@code core} interfaces.
  */
 package raytracer.render;
