@@ -92,7 +92,9 @@ final class ConvergeCommand implements Callable<Integer> {
     @Option(names = "--plot", paramLabel = "FILE.png", description = "The log-log plot. Default: <scene name>-convergence.png")
     Path plot;
 
-    @Option(names = "--csv", paramLabel = "FILE", description = "Also write the table as comma-separated values.")
+    @Option(names = "--csv", paramLabel = "FILE",
+            description = "Also write the table as comma-separated values; - writes them to standard output, alone (the table "
+                          + "then goes to standard error).")
     Path csv;
 
     @Option(names = "--metric", paramLabel = "M",
@@ -166,11 +168,10 @@ final class ConvergeCommand implements Callable<Integer> {
     private int converge(List<ConvergeConfig> curves, PrintWriter err) throws Exception {
         PrintWriter note = quiet ? new PrintWriter(PrintWriter.nullWriter()) : err;
         Path plotFile = plot != null ? plot : Path.of(stem(scene) + "-convergence.png");
-        checkWritable(plotFile, ".png");
-        if (csv != null) {
-            checkWritable(csv, "");
-        }
+        boolean csvToStdout = csv != null && csv.toString().equals("-");
+        checkOutputs(plotFile, csvToStdout);
         LoadedScene base = load(ConvergeConfig.SCENE, err);
+        checkNotInputs(base, plotFile, csvToStdout);
         ViewPlane vp = base.world().viewPlane();
         ConvergeReference.Image ref = reference(base, note);
         List<ConvergeRow> rows = new ArrayList<>();
@@ -178,7 +179,8 @@ final class ConvergeCommand implements Callable<Integer> {
         for (ConvergeConfig config : curves) {
             measure(config, ref.film(), vp.exposure(), rows, total, note);
         }
-        PrintWriter out = spec.commandLine().getOut();
+        // with --csv -, standard output is the CSV alone, and the table is a note
+        PrintWriter out = csvToStdout ? note : spec.commandLine().getOut();
         out.print(ConvergeReport.table(rows));
         ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
             "slope of log error against log seconds, %s: %.2f%n", name, slope));
@@ -190,7 +192,11 @@ final class ConvergeCommand implements Callable<Integer> {
             note.println("converge: metric: " + DISPLAYED);
         }
         out.flush();
-        if (csv != null) {
+        if (csvToStdout) {
+            PrintWriter stdout = spec.commandLine().getOut();
+            stdout.print(ConvergeReport.csv(rows));
+            stdout.flush();
+        } else if (csv != null) {
             AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
         }
         String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
@@ -198,6 +204,31 @@ final class ConvergeCommand implements Callable<Integer> {
         ConvergeReport.chart(title, rows, noise).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
+    }
+
+    /** Fails before the first render, not after the last, when an output could not be written: a usage error. */
+    private void checkOutputs(Path plotFile, boolean csvToStdout) {
+        usageIf(!plotFile.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png"),
+                "cannot write " + plotFile + ": the plot is a PNG file, give a name ending in .png");
+        String why = OutputFile.whyNotWritable(plotFile);
+        usageIf(why != null, "cannot write " + plotFile + ": " + why);
+        if (csv != null && !csvToStdout) {
+            why = OutputFile.whyNotWritable(csv);
+            usageIf(why != null, "cannot write " + csv + ": " + why);
+            usageIf(OutputFile.same(csv, plotFile), "--plot and --csv name the same file, " + csv);
+        }
+    }
+
+    /** Refuses an output that the run reads: the scene, a file it reads, the --reference image. */
+    private void checkNotInputs(LoadedScene base, Path plotFile, boolean csvToStdout) {
+        Path referenceFile = reference.toLowerCase(Locale.ROOT).endsWith(".pfm") ? Path.of(reference) : null;
+        List<Path> inputs = base.report().inputs();
+        String why = OutputFile.whyInput(plotFile, scene, inputs, referenceFile);
+        usageIf(why != null, "cannot write the plot " + plotFile + ": " + why);
+        if (csv != null && !csvToStdout) {
+            why = OutputFile.whyInput(csv, scene, inputs, referenceFile);
+            usageIf(why != null, "cannot write the CSV " + csv + ": " + why);
+        }
     }
 
     /** True when errors are taken on the displayed values ({@code --metric srgb}) rather than on radiance. */
@@ -347,17 +378,5 @@ final class ConvergeCommand implements Callable<Integer> {
         String name = file.getFileName().toString();
         int dot = name.lastIndexOf('.');
         return dot > 0 ? name.substring(0, dot) : name;
-    }
-
-    /** Fails before the first render, not after the last, when an output could not be written. */
-    private static void checkWritable(Path out, String extension) throws IOException {
-        if (!out.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(extension)) {
-            throw new IOException("cannot write " + out + ": the plot is a PNG file, give a name ending in .png");
-        }
-        Path dir = out.toAbsolutePath().getParent();
-        if (Files.isDirectory(out) || dir == null || !Files.isDirectory(dir) || !Files.isWritable(dir)) {
-            throw new IOException("cannot write " + out + ": " + (Files.isDirectory(out) ? "it is a directory"
-                                  : "directory " + dir + " does not exist or is not writable"));
-        }
     }
 }

@@ -78,8 +78,8 @@ final class ReferenceCache {
      */
     void store(Path file, Film film, String description) throws IOException {
         Files.createDirectories(dir);
-        AtomicFile.write(description(file), out -> out.write(description.getBytes(StandardCharsets.UTF_8)));
-        ImageWriters.write(film, 1, file);
+        AtomicFile.replace(description(file), out -> out.write(description.getBytes(StandardCharsets.UTF_8)));
+        ImageWriters.storePfm(film, 1, file);
     }
 
     /** The RMSE of the reference's own noise, from the {@value #NOISE_KEY} line of its description. */

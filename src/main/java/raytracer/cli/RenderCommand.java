@@ -122,9 +122,16 @@ public final class RenderCommand implements Callable<Integer> {
         return ErrorReport.install(new CommandLine(new RenderCommand()), err).execute(args);
     }
 
+    /** As {@link #run(PrintWriter, String...)}, with standard output ({@code converge}'s table and {@code --csv -}) on {@code out}. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        CommandLine cli = ErrorReport.install(new CommandLine(new RenderCommand()), err);
+        cli.setOut(out);
+        return cli.execute(args);
+    }
+
     @Override
     public Integer call() throws Exception {
         RenderRequest request = new OptionChecks(spec.commandLine()).check(this);
-        return ErrorReport.explainingLimits(() -> new RenderRun(request, spec.commandLine().getErr()).run());
+        return ErrorReport.explainingLimits(() -> new RenderRun(request, spec.commandLine()).run());
     }
 }

@@ -2,10 +2,11 @@ package raytracer.cli;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
 import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
@@ -36,10 +37,12 @@ final class RenderRun {
 
     private final RenderRequest request;
     private final RunReport report;
+    private final CommandLine commandLine;
 
-    RenderRun(RenderRequest request, PrintWriter err) {
+    RenderRun(RenderRequest request, CommandLine commandLine) {
         this.request = request;
-        this.report = new RunReport(err, request.repeat());
+        this.commandLine = commandLine;
+        this.report = new RunReport(commandLine.getErr(), request.repeat());
     }
 
     int run() throws Exception {
@@ -47,6 +50,11 @@ final class RenderRun {
             long loadStart = System.nanoTime();
             LoadedScene loaded = workers.call(this::loadScene);
             long loadNanos = System.nanoTime() - loadStart;
+            String input = OutputFile.whyInput(request.output(), request.scene(), loaded.report().inputs());
+            if (input != null) {
+                // found after loading, which names the inputs, and before rendering
+                throw new ParameterException(commandLine, "cannot write " + request.output() + ": " + input);
+            }
             int warned = loaded.report().warnings().size();
             if (!request.quiet()) {
                 report.warnings(loaded.report().warnings());

@@ -52,6 +52,14 @@ public final class ImageWriters {
     }
 
     /**
+     * Stores a PFM of this program's own (a cached reference): written atomically, replacing whatever
+     * is at {@code path} ({@link AtomicFile#replace}).
+     */
+    public static void storePfm(Film film, double exposure, Path path) throws IOException {
+        AtomicFile.replace(path, out -> writePfm(film, exposure, out));
+    }
+
+    /**
      * Portable float map: header "PF", size, -1 for little endian; rows from the bottom. Every value
      * is finite (see {@link #finite}), so a reader never meets Inf or NaN.
      */

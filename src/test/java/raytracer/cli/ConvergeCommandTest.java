@@ -198,7 +198,8 @@ class ConvergeCommandTest {
         assertOneLine(converge(Path.of("scenes", "closed-form-rectangle.yaml").toString(), "--filter", "gaussian", "--reference",
                                "closed-form", "-W", "8", "-H", "8", "--plot", dir.resolve("g.png").toString()),
                       1, "the exact image is of box-filtered pixels, and this run's filter is gaussian");
-        assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 1, "give a name ending in .png");
+        // an output that cannot be written is a bad option value, as for render -o
+        assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 2, "give a name ending in .png");
         assertOneLine(converge(dir.resolve("missing.yaml").toString()), 1, "no such file");
         assertOneLine(converge(), 2, "Missing required parameter: 'SCENE'");
     }

@@ -86,7 +86,7 @@ final class MeshCacheFile {
         CRC32C crc = new CRC32C();
         crc.update(out.array(), 0, out.position());
         out.putInt((int) crc.getValue());
-        AtomicFile.write(file, stream -> stream.write(out.array(), 0, out.position()));
+        AtomicFile.replace(file, stream -> stream.write(out.array(), 0, out.position()));
     }
 
     /**

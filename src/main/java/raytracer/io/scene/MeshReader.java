@@ -48,6 +48,7 @@ final class MeshReader {
         // everything that changes what is cached: the parse's smoothing, the builder and its leaves
         String options = "smooth=" + smooth + " bvh=" + builder + " leaf="
                          + (builder.equals("median") ? MEDIAN_LEAF_SIZE : SAH_MAX_LEAF_SIZE);
+        report.addInput(file);
         MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
         MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
         ObjModel model = null;
@@ -60,8 +61,10 @@ final class MeshReader {
             model.warnings().forEach(report::addWarning);
             report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
                                           model.faces()));
+            model.libraries().forEach(report::addInput);
         } else {
             report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
+            cached.libraries().forEach(library -> report.addInput(Path.of(library.path())));
         }
         List<ObjMaterial> objMaterials = cached != null ? cached.materials() : model.materials();
         Set<Integer> sheets = cached != null ? cached.sheets() : model.sheets();

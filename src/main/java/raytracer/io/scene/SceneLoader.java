@@ -73,7 +73,7 @@ public final class SceneLoader {
      * to it when it does not (null: no cache).
      */
     public static LoadedScene load(Path file, MeshCache cache) throws SceneException {
-        return load(source(file), text(file), OptionalInt.empty(), cache);
+        return withInput(load(source(file), text(file), OptionalInt.empty(), cache), file);
     }
 
     /**
@@ -81,7 +81,12 @@ public final class SceneLoader {
      * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
      */
     public static LoadedScene load(Path file, OptionalInt areaLightSamples) throws SceneException {
-        return load(source(file), text(file), areaLightSamples, null);
+        return withInput(load(source(file), text(file), areaLightSamples, null), file);
+    }
+
+    private static LoadedScene withInput(LoadedScene loaded, Path file) {
+        loaded.report().addInput(file);
+        return loaded;
     }
 
     static Source source(Path file) {
@@ -118,7 +123,7 @@ public final class SceneLoader {
         RayTreeSettings rayTree = RayTreeSettings.FULL_TREE.withCutoff(readCutoff(source, scene));
         DisplayEncoding encoding = readEncoding(source, scene);
         LoadReport report = new LoadReport();
-        TextureReader textures = new TextureReader(source);
+        TextureReader textures = new TextureReader(source, report);
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
             world.setBackground(textures.environment(scene.raw("environment"), "environment"));

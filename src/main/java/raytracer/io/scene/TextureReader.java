@@ -24,8 +24,16 @@ final class TextureReader {
     private final Map<Path, Film> images = new HashMap<>();
     private final Map<Path, Film> linearImages = new HashMap<>();
 
+    /** The files read are noted in {@code inputs}. */
+    private final LoadReport inputs;
+
     TextureReader(Source source) {
+        this(source, new LoadReport());
+    }
+
+    TextureReader(Source source, LoadReport inputs) {
         this.source = source;
+        this.inputs = inputs;
     }
 
     Texture texture(Node node) throws SceneException {
@@ -80,6 +88,7 @@ final class TextureReader {
     private Film image(Path path, Node where, boolean srgb) throws SceneException {
         Map<Path, Film> cache = srgb ? images : linearImages;
         Film film = cache.get(path);
+        inputs.addInput(path);
         if (film == null) {
             try {
                 film = ImageFiles.read(path, srgb);
