@@ -11,6 +11,7 @@ import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.io.scene.LoadedScene;
 import raytracer.image.ErrorMetrics;
+import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.ClosedFormReader;
@@ -33,8 +34,9 @@ final class ConvergeReference {
 
     /** A .pfm file of the image's size with finite values; anything else is an IOException naming the file. */
     static Film fromFile(Path file, int width, int height) throws IOException {
-        if (!Files.isRegularFile(file)) {
-            throw new IOException("cannot read reference " + file + ": " + (Files.isDirectory(file) ? "it is a directory" : "no such file"));
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null || !Files.isRegularFile(file)) {
+            throw new IOException("cannot read reference " + file + ": " + (notRegular != null ? notRegular : "no such file"));
         }
         Film film = ImageWriters.readPfm(file);
         if (film.width() != width || film.height() != height) {

@@ -74,4 +74,14 @@ public enum FileKind {
     public boolean writtenInPlace() {
         return this == FIFO || this == CHARACTER_DEVICE;
     }
+
+    /**
+     * Why an input file cannot be read, or null when it is a regular file or missing (its reader
+     * says "no such file"): "not a regular file (it is a FIFO (named pipe))". A FIFO would block its
+     * reader for ever, a device never end.
+     */
+    public static String notRegular(Path file) {
+        FileKind kind = of(file);
+        return kind == REGULAR || kind == MISSING ? null : "not a regular file (it is " + kind.words() + ")";
+    }
 }

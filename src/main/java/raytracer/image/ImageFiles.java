@@ -31,8 +31,9 @@ public final class ImageFiles {
      * data such as normal maps that are not colours.
      */
     public static Film read(Path file, boolean srgb) throws IOException {
-        if (Files.isDirectory(file)) {
-            throw new IOException("image " + file + " is a directory, not an image file");
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            throw new IOException("image " + file + " is " + notRegular);
         }
         if (!Files.isRegularFile(file)) {
             throw new IOException("image " + file + " not found");

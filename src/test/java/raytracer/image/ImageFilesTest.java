@@ -70,7 +70,7 @@ class ImageFilesTest {
     void aDirectoryIsCalledADirectory() throws IOException {
         // it was "not found"
         Path folder = Files.createDirectory(dir.resolve("folder.png"));
-        assertEquals("image " + folder + " is a directory, not an image file", error(folder));
+        assertEquals("image " + folder + " is not a regular file (it is a directory)", error(folder));
         assertEquals("image " + dir.resolve("none.png") + " not found", error(dir.resolve("none.png")));
     }
 

@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import raytracer.image.FileKind;
 
 /**
  * Reads an MTL library: {@code newmtl} blocks with Kd, Ks, Ka, Ke, Ns, d / Tr, Ni, illum, map_Kd and
@@ -74,8 +75,12 @@ final class MtlLoader {
     /** The library's text without a byte-order mark, decoded as {@link Decoding} says. */
     private static Decoding.Text read(Path file) throws ObjException {
         try {
-            if (Files.exists(file) && (!Files.isRegularFile(file) || Files.size(file) > MAX_BYTES)) {
-                throw new ObjException("material library " + file + " is not a file of at most " + (MAX_BYTES >> 20) + " MiB");
+            String notRegular = FileKind.notRegular(file);
+            if (notRegular != null) {
+                throw new ObjException("material library " + file + " is " + notRegular);
+            }
+            if (Files.exists(file) && Files.size(file) > MAX_BYTES) {
+                throw new ObjException("material library " + file + " is larger than " + (MAX_BYTES >> 20) + " MiB");
             }
             byte[] bytes = Files.readAllBytes(file);
             return Decoding.decode(bytes, Decoding.byteOrderMark(bytes, bytes.length), bytes.length);

@@ -13,6 +13,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
+import raytracer.image.FileKind;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -84,6 +85,10 @@ public final class ObjLoader {
     }
 
     private ObjModel read(boolean smoothNormals) throws ObjException {
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            throw new ObjException("cannot read mesh " + name + ": " + notRegular);
+        }
         try (InputStream raw = Files.newInputStream(file);
              InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw) {
             ChunkPipeline.run(new LineChunks(in), this::merge);

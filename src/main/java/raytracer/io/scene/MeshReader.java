@@ -8,6 +8,7 @@ import raytracer.accel.MeshBVH;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.Texture;
+import raytracer.image.FileKind;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
@@ -49,6 +50,11 @@ final class MeshReader {
         String options = "smooth=" + smooth + " bvh=" + builder + " leaf="
                          + (builder.equals("median") ? MEDIAN_LEAF_SIZE : SAH_MAX_LEAF_SIZE);
         report.addInput(file);
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            // before the cache's checksum of the file, which would block on a FIFO as a parse would
+            throw o.source().error(o.raw("file"), "cannot read mesh " + file + ": " + notRegular);
+        }
         MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
         MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
         ObjModel model = null;
