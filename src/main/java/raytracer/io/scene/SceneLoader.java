@@ -1,7 +1,11 @@
 package raytracer.io.scene;
 
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.Reader;
 import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
@@ -93,10 +97,32 @@ public final class SceneLoader {
         return new Source(file.toString(), file.toAbsolutePath().getParent());
     }
 
-    /** The file's text, or a SceneException saying why it cannot be read. */
+    /**
+     * The file's text, or a SceneException saying why it cannot be read. The file may be a pipe (a
+     * scene written by another program): it is read up to {@link #MAX_CHARACTERS} and refused past
+     * that, so a file that never ends ({@code /dev/zero}) stops there rather than filling the heap.
+     */
     static String text(Path file) throws SceneException {
-        try {
-            return Files.readString(file, StandardCharsets.UTF_8);
+        if (Files.isDirectory(file)) {
+            throw new SceneException("cannot read scene file " + file + ": it is a directory");
+        }
+        CharsetDecoder utf8 = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+            .onUnmappableCharacter(CodingErrorAction.REPORT);
+        try (Reader in = new InputStreamReader(Files.newInputStream(file), utf8)) {
+            StringBuilder text = new StringBuilder();
+            char[] buffer = new char[1 << 16];
+            long codePoints = 0;
+            for (int n; (n = in.read(buffer)) > 0; ) {
+                text.append(buffer, 0, n);
+                for (int i = 0; i < n; i++) {
+                    // a code point is a char that is not the second half of a surrogate pair
+                    codePoints += Character.isLowSurrogate(buffer[i]) ? 0 : 1;
+                }
+                if (codePoints > MAX_CHARACTERS) {
+                    throw tooLong(file.toString());
+                }
+            }
+            return text.toString();
         } catch (NoSuchFileException e) {
             throw new SceneException("cannot read scene file " + file + ": no such file");
         } catch (AccessDeniedException e) {
@@ -104,9 +130,13 @@ public final class SceneLoader {
         } catch (CharacterCodingException e) {
             throw new SceneException("cannot read scene file " + file + ": not UTF-8 text");
         } catch (IOException e) {
-            String reason = Files.isDirectory(file) ? "it is a directory" : e.getMessage();
-            throw new SceneException("cannot read scene file " + file + ": " + reason, e);
+            throw new SceneException("cannot read scene file " + file + ": " + e.getMessage(), e);
         }
+    }
+
+    private static SceneException tooLong(String name) {
+        return new SceneException(name + ": the scene file has more than the " + MAX_CHARACTERS + " characters a scene may hold "
+                                  + "(put large meshes in OBJ files)");
     }
 
     /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
@@ -167,10 +197,8 @@ public final class SceneLoader {
 
     /** The YAML node tree of the text; size, characters and syntax checked, in that order. */
     private static Node compose(Source source, String text) throws SceneException {
-        int length = text.codePointCount(0, text.length());
-        if (length > MAX_CHARACTERS) {
-            throw new SceneException(source.name() + ": the scene file has " + length + " characters, more than the "
-                                     + MAX_CHARACTERS + " a scene may hold (put large meshes in OBJ files)");
+        if (text.codePointCount(0, text.length()) > MAX_CHARACTERS) {
+            throw tooLong(source.name());
         }
         int bad = SceneText.firstUnprintable(text);
         if (bad >= 0) {
