@@ -19,6 +19,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
+import raytracer.core.Sampler;
 import raytracer.core.ViewPlane;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
@@ -242,7 +243,7 @@ final class ConvergeCommand implements Callable<Integer> {
             spp = new ArrayList<>(List.of(1, 4, 16, 64));
         }
         for (int n : spp) {
-            usageIf(n < 1, "--spp values must be at least 1, got " + n);
+            usageIf(n < 1 || n > Sampler.MAX_SAMPLES, "--spp values must be 1 to " + Sampler.MAX_SAMPLES + ", got " + n);
         }
         for (double t : budgets) {
             usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
@@ -253,7 +254,9 @@ final class ConvergeCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         usageIf(!List.of("linear", "srgb").contains(metric), "--metric must be linear or srgb, got '" + metric + "'");
-        usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
+        // rendered in two halves of half the count each
+        usageIf(referenceSpp < 1 || referenceSpp > 2 * Sampler.MAX_SAMPLES, "--reference-spp must be 1 to "
+                + 2 * Sampler.MAX_SAMPLES + ", got " + referenceSpp);
         usageIf(threads < 1, "--threads must be at least 1, got " + threads);
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
         usageIf(height != null && height < 1, "--height must be at least 1, got " + height);

@@ -29,7 +29,7 @@ final class OptionChecks {
     RenderRequest check(RenderCommand o) {
         requireAtLeast("--width", o.width, 1);
         requireAtLeast("--height", o.height, 1);
-        requireAtLeast("--spp", o.samples, 1);
+        requireWithin("--spp", o.samples, 1, Sampler.MAX_SAMPLES);
         requireWithin("--max-depth", o.maxDepth, 0, ViewPlane.MAX_DEPTH);
         requireWithin("--threads", o.threads, 1, Workers.MAX_THREADS);
         requireAtLeast("--repeat", o.repeat, 1);

@@ -188,7 +188,7 @@ class ConvergeCommandTest {
     @Test
     void badOptionsAreUsageErrors() throws IOException {
         Path scene = write("spheres.yaml", SPHERES);
-        assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be at least 1, got 0");
+        assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be 1 to 1048576, got 0");
         assertOneLine(converge(scene.toString(), "--time", "-1"), 2, "--time values must be positive seconds");
         assertOneLine(converge(scene.toString(), "--config", "sampler=poisson-disk"), 2, "unknown sampler 'poisson-disk'; allowed: regular");
         assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");

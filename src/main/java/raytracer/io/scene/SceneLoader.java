@@ -30,6 +30,7 @@ import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
+import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -235,7 +236,7 @@ public final class SceneLoader {
                                + String.join(", ", Samplers.names()));
         }
         return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
-                             image.integer("samples", 4, 1), Samplers.byName(samplerName),
+                             image.integer("samples", 4, 1, Sampler.MAX_SAMPLES), Samplers.byName(samplerName),
                              image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true),
                              readFilter(source, image));
     }
