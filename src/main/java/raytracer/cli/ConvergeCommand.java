@@ -353,6 +353,11 @@ final class ConvergeCommand implements Callable<Integer> {
             ErrorMetrics error = displayedMetric() ? ErrorMetrics.compareDisplayed(film, exposure, ref)
                 : ErrorMetrics.compare(film, exposure, ref);
             rows.add(new ConvergeRow(name, stats.samplesPerPixel(), lights, stats.seconds(), error));
+            String dropped = RunReport.droppedLine(stats);
+            if (dropped != null) {
+                // even with --quiet: the error measured is then of another image than the scene's
+                spec.commandLine().getErr().println("render converge: warning: " + name + ", " + n + " spp: " + dropped);
+            }
             note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,
                         stats.samplesPerPixel(), stats.seconds(), error.relativeRmse());
         }

@@ -85,6 +85,7 @@ final class RenderRun {
             Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
             RenderStats stats = render(new Renderer(world, rayTree, workers, request.seed()), film);
             write(film, world.viewPlane(), encoding);
+            report.droppedSamples(stats);
             if (!request.quiet()) {
                 report.summary(stats, request.output(), world.viewPlane().filter());
             }

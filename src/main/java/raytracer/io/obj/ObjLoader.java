@@ -194,13 +194,13 @@ public final class ObjLoader {
             }
             case "vt" -> {
                 require(texcoord.reset(text).matches(), "'vt u [v [w]]' with numbers");
-                texcoords.add((float) finite(texcoord, 1));
-                texcoords.add(texcoord.start(2) >= 0 ? (float) finite(texcoord, 2) : 0f);
+                texcoords.add(floatValue(texcoord, 1, "texture coordinate"));
+                texcoords.add(texcoord.start(2) >= 0 ? floatValue(texcoord, 2, "texture coordinate") : 0f);
             }
             case "vn" -> {
                 require(normal.reset(text).matches(), "'vn x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
-                    normals.add((float) finite(normal, g));
+                    normals.add(floatValue(normal, g, "normal component"));
                 }
             }
             case "f" -> materials.addTriangles(faces.read(text, keyword.end(), lineNumber, positions.size / 3,
@@ -230,6 +230,16 @@ public final class ObjLoader {
             throw error("coordinate '" + m.group(group) + "' is not a finite number");
         }
         return v;
+    }
+
+    /** A value kept as a float (normals, texture coordinates): past the float range it would be infinite, a normal NaN. */
+    private float floatValue(Matcher m, int group, String what) throws ObjException {
+        double v = finite(m, group);
+        if (Math.abs(v) > Float.MAX_VALUE) {
+            throw error(what + " '" + m.group(group) + "' is beyond the largest float ("
+                        + String.format(java.util.Locale.ROOT, "%.6g", Float.MAX_VALUE) + ")");
+        }
+        return (float) v;
     }
 
     private void require(boolean matched, String expected) throws ObjException {

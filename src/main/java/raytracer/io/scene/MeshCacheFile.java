@@ -40,7 +40,7 @@ final class MeshCacheFile {
      * The layout above and what the OBJ reader and {@link MeshReader} make of a file: add 1 when
      * either changes, so that files written before are rebuilt rather than trusted.
      */
-    static final int VERSION = 2;
+    static final int VERSION = 3;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
