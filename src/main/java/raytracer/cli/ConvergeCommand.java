@@ -148,7 +148,7 @@ final class ConvergeCommand implements Callable<Integer> {
             String message = e instanceof OutOfMemoryError
                 ? "out of memory; give Java more heap, e.g. java -Xmx8g -jar render.jar converge ..."
                 : e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
-            err.println("render converge: error: " + message.replace('\n', ' '));
+            err.println("render converge: error: " + Terminal.line(message));
             if (verbose) {
                 e.printStackTrace(err);
             }
@@ -257,7 +257,8 @@ final class ConvergeCommand implements Callable<Integer> {
         // rendered in two halves of half the count each
         usageIf(referenceSpp < 1 || referenceSpp > 2 * Sampler.MAX_SAMPLES, "--reference-spp must be 1 to "
                 + 2 * Sampler.MAX_SAMPLES + ", got " + referenceSpp);
-        usageIf(threads < 1, "--threads must be at least 1, got " + threads);
+        usageIf(threads < 1 || threads > Workers.MAX_THREADS, "--threads must be 1 to " + Workers.MAX_THREADS + ", got " + threads);
+        usageIf(cacheDir != null && cacheDir.toString().isEmpty(), "--cache must name a folder, got an empty name");
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
         usageIf(height != null && height < 1, "--height must be at least 1, got " + height);
         usageIf(!List.of("auto", "closed-form", "self").contains(reference) && !reference.toLowerCase(Locale.ROOT).endsWith(".pfm"),
@@ -292,7 +293,7 @@ final class ConvergeCommand implements Callable<Integer> {
         LoadedScene loaded = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
         World world = loaded.world();
         if (!quiet && warnings != null) {
-            loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + w));
+            loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + Terminal.line(w)));
         }
         ViewPlane vp = world.viewPlane();
         if (config.sampler() != null) {

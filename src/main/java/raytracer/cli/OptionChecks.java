@@ -54,6 +54,10 @@ final class OptionChecks {
         FilterChoice filter = usage(o.filter::choice);
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
                                                       encoding);
+        if (o.cacheDir != null && o.cacheDir.toString().isEmpty()) {
+            // an empty path is the working directory, which is no place for cache files
+            throw new ParameterException(commandLine, "--cache-dir must name a folder, got an empty name");
+        }
         if (o.noCache && o.cacheDir != null) {
             throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
         }

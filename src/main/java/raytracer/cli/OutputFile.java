@@ -1,6 +1,7 @@
 package raytracer.cli;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Collection;
@@ -47,6 +48,12 @@ final class OutputFile {
             file = AtomicFile.destination(out);
         } catch (IOException e) {
             return "too many levels of symbolic links (a loop?)";
+        }
+        Path name = file.getFileName();
+        int bytes = name == null ? 0 : name.toString().getBytes(StandardCharsets.UTF_8).length;
+        if (bytes > AtomicFile.MAX_NAME_BYTES) {
+            return "the file name is " + bytes + " bytes long; at most " + AtomicFile.MAX_NAME_BYTES + " fit (a folder entry "
+                   + "holds 255, and the temporary file written first adds " + (255 - AtomicFile.MAX_NAME_BYTES) + ")";
         }
         FileKind kind = FileKind.of(file);
         if (kind == FileKind.DIRECTORY) {

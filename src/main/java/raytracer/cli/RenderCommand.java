@@ -119,14 +119,12 @@ public final class RenderCommand implements Callable<Integer> {
      * input or failed render, 2 bad usage.
      */
     public static int run(PrintWriter err, String... args) {
-        return ErrorReport.install(new CommandLine(new RenderCommand()), err).execute(args);
+        return run(new PrintWriter(System.out, true), err, args);
     }
 
     /** As {@link #run(PrintWriter, String...)}, with standard output ({@code converge}'s table and {@code --csv -}) on {@code out}. */
     public static int run(PrintWriter out, PrintWriter err, String... args) {
-        CommandLine cli = ErrorReport.install(new CommandLine(new RenderCommand()), err);
-        cli.setOut(out);
-        return cli.execute(args);
+        return ErrorReport.install(new CommandLine(new RenderCommand()), out, err).execute(args);
     }
 
     @Override

@@ -29,7 +29,7 @@ final class RunReport {
     }
 
     void warnings(List<String> warnings) {
-        warnings.forEach(w -> err.println("render: warning: " + w));
+        warnings.forEach(w -> err.println("render: warning: " + Terminal.line(w)));
     }
 
     void repeat(int i, RenderStats s) {

@@ -72,6 +72,13 @@ public final class AtomicFile {
         return file;
     }
 
+    /**
+     * The longest name (in UTF-8 bytes) that can be written so: the temporary file's name is the
+     * target's with a dot before it and at most 22 characters after it, and a folder entry holds
+     * 255 bytes (NAME_MAX of Linux's file systems).
+     */
+    public static final int MAX_NAME_BYTES = 255 - 1 - 1 - 13 - ".partial".length();
+
     /** Linux's limit of links followed in one path (MAXSYMLINKS). */
     static final int MOST_LINKS = 40;
 

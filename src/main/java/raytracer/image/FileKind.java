@@ -1,6 +1,7 @@
 package raytracer.image;
 
 import java.io.IOException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
@@ -21,6 +22,8 @@ public enum FileKind {
     CHARACTER_DEVICE("a character device"),
     BLOCK_DEVICE("a block device"),
     SOCKET("a socket"),
+    /** Symbolic links that lead back to themselves: nothing can be read or written through them. */
+    LINK_LOOP("a loop of symbolic links"),
     OTHER("not a file this program knows");
 
     private final String words;
@@ -49,6 +52,13 @@ public enum FileKind {
         try {
             mode = (Integer) Files.getAttribute(path, "unix:mode", options);
         } catch (NoSuchFileException e) {
+            return MISSING;
+        } catch (FileSystemException e) {
+            // ELOOP: "Too many levels of symbolic links"
+            if (e.getReason() != null && e.getReason().contains("symbolic links")) {
+                return LINK_LOOP;
+            }
+            // a path through a regular file (ENOTDIR), too long, or through a folder that cannot be searched: nothing is there to read
             return MISSING;
         } catch (IOException | UnsupportedOperationException | IllegalArgumentException e) {
             // no unix view (another file system): what the portable attributes can tell

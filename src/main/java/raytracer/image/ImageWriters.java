@@ -119,8 +119,12 @@ public final class ImageWriters {
         if (width < 1 || height < 1 || (long) width * height > Film.MAX_PIXELS || scale == 0 || Double.isNaN(scale)) {
             throw new IOException(path + ": bad PFM header: " + width + "x" + height + " pixels, scale " + scale);
         }
-        pos[0]++; // the single whitespace byte after the header
         long expected = 12L * width * height;
+        // the single whitespace byte after the header; a header written with CRLF line ends has
+        // two, which the length tells apart from a first data byte that happens to be a LF
+        boolean crlf = pos[0] + 1 < bytes.length && bytes[pos[0]] == '\r' && bytes[pos[0] + 1] == '\n'
+                       && bytes.length - pos[0] - 2 == expected;
+        pos[0] += crlf ? 2 : 1;
         if (bytes.length - pos[0] < expected) {
             throw new IOException(path + ": truncated PFM: " + Math.max(0, bytes.length - pos[0]) + " bytes of pixels, "
                                   + expected + " expected for " + width + "x" + height);

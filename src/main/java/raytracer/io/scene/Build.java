@@ -7,6 +7,7 @@ import raytracer.accel.FlatBVH;
 import raytracer.accel.MedianSplitBuilder;
 import raytracer.accel.MeshBVH;
 import raytracer.accel.SahBuilder;
+import raytracer.image.IoReason;
 import raytracer.core.Material;
 import raytracer.io.obj.ObjModel;
 
@@ -45,7 +46,7 @@ final class Build {
         try {
             contents = lookup.read();
         } catch (IOException e) {
-            report.addWarning("mesh cache " + lookup.file() + " is unusable (" + e.getMessage() + "); " + name
+            report.addWarning("mesh cache " + lookup.file() + " is unusable (" + IoReason.of(e) + "); " + name
                               + " is parsed again");
             long parse = System.nanoTime();
             ObjModel model = MeshReader.parse(object, file, smooth);

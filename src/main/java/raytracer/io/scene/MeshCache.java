@@ -12,6 +12,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import raytracer.accel.MeshBVH;
+import raytracer.image.FileKind;
+import raytracer.image.IoReason;
 import raytracer.io.obj.ObjModel;
 
 /**
@@ -53,6 +55,15 @@ public final class MeshCache {
         return dir;
     }
 
+    /** Makes the folder, saying so when something else is at its name. */
+    private void createDir() throws IOException {
+        FileKind kind = FileKind.of(dir);
+        if (kind != FileKind.DIRECTORY && kind != FileKind.MISSING) {
+            throw new IOException(dir + " is " + kind.words() + ", not a folder");
+        }
+        Files.createDirectories(dir);
+    }
+
     /**
      * Looks for the entry of {@code obj} made with {@code options}. A stale or damaged entry is a
      * warning and counts as none; an OBJ file that cannot be read counts as none, silently (its
@@ -77,7 +88,7 @@ public final class MeshCache {
             }
             warn.accept("mesh cache " + file + " is stale (" + stale + "); " + obj.getFileName() + " is parsed again");
         } catch (IOException e) {
-            warn.accept("mesh cache " + file + " is unusable (" + e.getMessage() + "); " + obj.getFileName()
+            warn.accept("mesh cache " + file + " is unusable (" + IoReason.of(e) + "); " + obj.getFileName()
                         + " is parsed again");
         }
         return new Lookup(this, file, options, stamp, null);
@@ -164,11 +175,15 @@ public final class MeshCache {
                     model.mesh().vertexCount(), model.mesh().triangleCount(), model.mesh().hasNormals(),
                     model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials(),
                     model.sheets());
-                Files.createDirectories(cache.dir);
+                cache.createDir();
                 MeshCacheFile.write(file, h, mesh.mesh(), mesh.bvh());
                 return true;
-            } catch (IOException | RuntimeException e) {
-                warn.accept("cannot write the mesh cache " + file + " (" + e.getMessage() + "); the mesh will be parsed again next time");
+            } catch (IOException e) {
+                warn.accept("cannot write the mesh cache " + file + " (" + IoReason.of(e) + "); the mesh will be parsed again next time");
+                return false;
+            } catch (RuntimeException e) {
+                warn.accept("cannot write the mesh cache " + file + " (" + (e.getMessage() != null ? e.getMessage()
+                            : e.getClass().getSimpleName()) + "); the mesh will be parsed again next time");
                 return false;
             }
         }

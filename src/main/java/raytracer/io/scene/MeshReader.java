@@ -39,7 +39,7 @@ final class MeshReader {
 
     static GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures,
                                 MeshCache cache) throws SceneException {
-        Path file = o.source().resolve(o.requiredString("file"));
+        Path file = o.path("file");
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
         if (!builder.equals("median") && !builder.equals("sah")) {
@@ -140,7 +140,7 @@ final class MeshReader {
             if (!space.equals("tangent") && !space.equals("object")) {
                 throw o.source().error(map.raw("space"), "unknown normal-map space '" + space + "'; allowed: object, tangent");
             }
-            ImageTexture texture = new ImageTexture(textures.linearImage(o.source().resolve(map.requiredString("file")), map.raw("file")));
+            ImageTexture texture = new ImageTexture(textures.linearImage(map.path("file"), map.raw("file")));
             int ids = Math.max(1, materials.size());
             for (int id = 0; id < ids; id++) {
                 maps.add(new NormalMap(id, texture, space.equals("tangent")));

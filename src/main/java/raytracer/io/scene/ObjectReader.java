@@ -59,7 +59,12 @@ final class ObjectReader {
         if (!o.has("transform")) {
             return shape;
         }
-        Instance instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+        Instance instance;
+        try {
+            instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+        } catch (IllegalArgumentException e) {
+            throw source.error(o.raw("transform"), e.getMessage());
+        }
         instance.setCastsShadows(shape.castsShadows());
         return instance;
     }
@@ -99,7 +104,7 @@ final class ObjectReader {
         Material m = materials.get(name);
         if (m == null) {
             throw o.source().error(o.raw("material"), "material '" + name + "' is not defined; defined: "
-                                   + (materials.isEmpty() ? "none" : String.join(", ", new TreeSet<>(materials.keySet()))));
+                                   + (materials.isEmpty() ? "none" : YamlObject.names(materials.keySet())));
         }
         return m;
     }

@@ -38,6 +38,7 @@ import raytracer.core.World;
 import raytracer.filters.Filters;
 import raytracer.filters.Gaussian;
 import raytracer.image.DisplayEncoding;
+import raytracer.image.Film;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
 import raytracer.samplers.Samplers;
@@ -158,6 +159,10 @@ public final class SceneLoader {
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
             world.setBackground(textures.environment(scene.raw("environment"), "environment"));
+            if (scene.has("background")) {
+                report.addWarning(source.at(scene.raw("background")) + ": 'background' is not used: the 'environment' map is "
+                                  + "what rays that miss every object see");
+            }
         }
         if (scene.has("pass")) {
             try {
@@ -211,16 +216,30 @@ public final class SceneLoader {
         LoaderOptions options = new LoaderOptions();
         options.setAllowDuplicateKeys(false);
         options.setCodePointLimit(MAX_CHARACTERS);
+        SceneText reader = new SceneText(source.name(), text);
         try {
-            return new Composer(new ParserImpl(new SceneText(source.name(), text), options), new Resolver(), options)
-                .getSingleNode();
+            return new Composer(new ParserImpl(reader, options), new Resolver(), options).getSingleNode();
         } catch (MarkedYAMLException e) {
             String problem = e.getProblem() != null ? e.getProblem() : e.getMessage();
             throw (e.getProblemMark() != null ? source.error(e.getProblemMark(), "syntax error: " + problem)
                                               : new SceneException(source.name() + ": syntax error: " + problem));
         } catch (YAMLException e) {
-            throw new SceneException(source.name() + ": syntax error: " + e.getMessage().replace('\n', ' '));
+            // SnakeYAML's limits (nesting, aliases) carry no mark: where the reader stopped is where the limit was passed
+            throw source.error(reader.getMark(), limit(e.getMessage(), options));
         }
+    }
+
+    /** SnakeYAML's message of a limit passed, in words that say what to change. */
+    private static String limit(String message, LoaderOptions options) {
+        String m = message == null ? "" : message.replace('\n', ' ');
+        if (m.startsWith("Nesting Depth exceeded")) {
+            return "lists and mappings nested deeper than " + options.getNestingDepthLimit() + " levels";
+        }
+        if (m.startsWith("Number of aliases")) {
+            return "more than " + options.getMaxAliasesForCollections() + " aliases (*name) of lists or mappings; a scene "
+                   + "this repetitive is refused rather than expanded";
+        }
+        return "syntax error: " + m;
     }
 
     private static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
@@ -235,7 +254,13 @@ public final class SceneLoader {
             throw source.error(image.raw("sampler"), "unknown sampler '" + samplerName + "'; allowed: "
                                + String.join(", ", Samplers.names()));
         }
-        return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
+        int width = image.integer("width", 640, 1);
+        int height = image.integer("height", 360, 1);
+        if ((long) width * height > Film.MAX_PIXELS) {
+            throw source.error(image.has("width") ? image.raw("width") : image.raw("height"), "an image of " + width + " x "
+                               + height + " pixels is not possible: it holds at most " + Film.MAX_PIXELS + " pixels");
+        }
+        return new ViewPlane(width, height,
                              image.integer("samples", 4, 1, Sampler.MAX_SAMPLES), Samplers.byName(samplerName),
                              image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true),
                              readFilter(source, image));

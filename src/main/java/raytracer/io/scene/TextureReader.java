@@ -60,7 +60,7 @@ final class TextureReader {
         YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity", "rotate-y"));
         Film map = image(e);
         double intensity = e.number("intensity", 1, 0, false);
-        e.checkEmission("intensity", intensity, "file", "the brightest pixel of " + source.resolve(e.requiredString("file")),
+        e.checkEmission("intensity", intensity, "file", "the brightest pixel of " + e.path("file"),
                         brightest(map));
         return new EnvironmentMap(map, intensity, e.number("rotate-y", 0));
     }
@@ -101,6 +101,6 @@ final class TextureReader {
     }
 
     private Film image(YamlObject o) throws SceneException {
-        return image(source.resolve(o.requiredString("file")), o.raw("file"));
+        return image(o.path("file"), o.raw("file"));
     }
 }
