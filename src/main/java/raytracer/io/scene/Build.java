@@ -1,13 +1,11 @@
 package raytracer.io.scene;
 
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 import raytracer.accel.FlatBVH;
 import raytracer.accel.MedianSplitBuilder;
 import raytracer.accel.MeshBVH;
 import raytracer.accel.SahBuilder;
-import raytracer.image.IoReason;
 import raytracer.core.Material;
 import raytracer.io.obj.ObjModel;
 
@@ -39,24 +37,11 @@ final class Build {
         this.name = file.getFileName().toString();
     }
 
-    /** The cached mesh and tree; a file that fails its checksum now is a warning, and the mesh is parsed and built. */
-    MeshBVH fromCache() throws SceneException {
+    /** The cached mesh and tree, read and checked whole when the scene was loaded. */
+    MeshBVH fromCache(MeshCacheFile.Contents contents, long readNanos) {
         long start = System.nanoTime();
-        MeshCacheFile.Contents contents;
-        try {
-            contents = lookup.read();
-        } catch (IOException e) {
-            report.addWarning("mesh cache " + lookup.file() + " is unusable (" + IoReason.of(e) + "); " + name
-                              + " is parsed again");
-            long parse = System.nanoTime();
-            ObjModel model = MeshReader.parse(object, file, smooth);
-            long parsed = System.nanoTime() - parse;
-            report.recordPrepareTiming("parse " + name, parsed);
-            model.warnings().forEach(report::addWarning);
-            return of(model, parsed);
-        }
         MeshBVH mesh = MeshBVH.inLeafOrder(contents.mesh(), contents.bvh(), materials);
-        long took = System.nanoTime() - start;
+        long took = readNanos + System.nanoTime() - start;
         report.recordPrepareTiming("read " + name + " from the mesh cache", took);
         report.addStatistic(String.format("mesh %s: read from the mesh cache in %.3f s (%s)", name, took / 1e9, lookup.file()));
         return mesh;

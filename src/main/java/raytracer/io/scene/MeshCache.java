@@ -65,8 +65,8 @@ public final class MeshCache {
     }
 
     /**
-     * Looks for the entry of {@code obj} made with {@code options}. A stale or damaged entry is a
-     * warning and counts as none; an OBJ file that cannot be read counts as none, silently (its
+     * Looks for the entry of {@code obj} made with {@code options}, reading it whole: nothing of an
+     * entry is used before all of it is checked. A stale or damaged entry is a warning and counts as none; an OBJ file that cannot be read counts as none, silently (its
      * parse will say why).
      */
     Lookup lookup(Path obj, String options, Consumer<String> warn) {
@@ -81,10 +81,10 @@ public final class MeshCache {
             return new Lookup(this, file, options, stamp, null);
         }
         try {
-            MeshCacheFile.Header header = MeshCacheFile.readHeader(file);
-            String stale = stale(header, stamp, options);
+            MeshCacheFile.Contents contents = MeshCacheFile.read(file);
+            String stale = stale(contents.header(), stamp, options);
             if (stale == null) {
-                return new Lookup(this, file, options, stamp, header);
+                return new Lookup(this, file, options, stamp, contents);
             }
             warn.accept("mesh cache " + file + " is stale (" + stale + "); " + obj.getFileName() + " is parsed again");
         } catch (IOException e) {
@@ -126,36 +126,38 @@ public final class MeshCache {
     }
 
     /**
-     * One OBJ file's place in the cache: the entry found ({@link #header}, null when none is
-     * usable), or where to write one after building.
+     * One OBJ file's place in the cache: the entry found, read whole and checked ({@link #contents},
+     * null when none is usable), or where to write one after building.
      */
     static final class Lookup {
         private final MeshCache cache;
         private final Path file;
         private final String options;
         private final MeshCacheFile.Stamp source;
-        private final MeshCacheFile.Header header;
+        private MeshCacheFile.Contents contents;
 
-        private Lookup(MeshCache cache, Path file, String options, MeshCacheFile.Stamp source, MeshCacheFile.Header header) {
+        private Lookup(MeshCache cache, Path file, String options, MeshCacheFile.Stamp source, MeshCacheFile.Contents contents) {
             this.cache = cache;
             this.file = file;
             this.options = options;
             this.source = source;
-            this.header = header;
+            this.contents = contents;
         }
 
         /** The usable entry's header, or null. */
         MeshCacheFile.Header header() {
-            return header;
+            return contents == null ? null : contents.header();
         }
 
         Path file() {
             return file;
         }
 
-        /** The entry's mesh and tree, checked against the file's checksum. */
-        MeshCacheFile.Contents read() throws IOException {
-            return MeshCacheFile.read(file);
+        /** The usable entry's mesh and tree, as read and checked when it was looked up; the lookup lets go of them. */
+        MeshCacheFile.Contents take() {
+            MeshCacheFile.Contents taken = contents;
+            contents = null;
+            return taken;
         }
 
         /**

@@ -55,7 +55,9 @@ final class MeshReader {
             // before the cache's checksum of the file, which would block on a FIFO as a parse would
             throw o.source().error(o.raw("file"), "cannot read mesh " + file + ": " + notRegular);
         }
+        long lookupStart = System.nanoTime();
         MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
+        long readNanos = System.nanoTime() - lookupStart;
         MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
         ObjModel model = null;
         long parseNanos = 0;
@@ -86,7 +88,7 @@ final class MeshReader {
         long parsedIn = parseNanos;
         PendingMesh mesh = new PendingMesh("mesh " + name, cached != null ? cached.bounds() : model.mesh().bounds(), materials,
                                            () -> {
-                                               MeshBVH made = cached != null ? build.fromCache() : build.of(parsed, parsedIn);
+                                               MeshBVH made = cached != null ? build.fromCache(lookup.take(), readNanos) : build.of(parsed, parsedIn);
                                                for (NormalMap map : maps) {
                                                    made.triangles().setNormalMap(map.id(), map.texture(), map.tangent());
                                                }

@@ -21,6 +21,8 @@ import raytracer.accel.MeshBVH;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
+import raytracer.math.BBox;
+import raytracer.render.SceneAnalysis;
 import raytracer.render.Renders;
 import raytracer.shapes.mesh.Mesh;
 
@@ -79,14 +81,27 @@ class MeshCacheTest {
     }
 
     private Run run(Path scene, MeshCache cache) throws IOException, SceneException {
+        return run(scene, cache, () -> { });
+    }
+
+    /** As {@link #run(Path, MeshCache)}, with the scene analysis on, and {@code between} run after loading, before preparing. */
+    private Run run(Path scene, MeshCache cache, IoStep between) throws IOException, SceneException {
         LoadedScene loaded = SceneLoader.load(scene, cache);
         World world = loaded.world();
+        SceneAnalysis.apply(world, loaded.rayTree());
+        between.run();
         world.prepare();
         Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
         Renders.render(world, 1, 1, film);
         Path pfm = dir.resolve("image.pfm");
         ImageWriters.write(film, 1, pfm);
-        return new Run((MeshBVH) world.objects().get(0), loaded.report(), Files.readAllBytes(pfm));
+        MeshBVH mesh = world.objects().isEmpty() ? null : (MeshBVH) world.objects().get(0);
+        return new Run(mesh, loaded.report(), Files.readAllBytes(pfm));
+    }
+
+    @FunctionalInterface
+    private interface IoStep {
+        void run() throws IOException;
     }
 
     private Path entry() throws IOException {
@@ -171,6 +186,75 @@ class MeshCacheTest {
         assertTrue(rebuilt.report().warnings().get(0).contains(warning), rebuilt.report().warnings().toString());
         assertTrue(mentions(rebuilt.report(), "written to the mesh cache"), rebuilt.report().statistics().toString());
         assertArrayEquals(reference.image(), rebuilt.image());
+    }
+
+    /** Where the big-endian bytes of {@code value} first occur in {@code bytes} (the header is written by DataOutput). */
+    private static int find(byte[] bytes, double value) {
+        byte[] pattern = ByteBuffer.allocate(8).putDouble(value).array();
+        outer:
+        for (int i = 0; i + 8 <= bytes.length; i++) {
+            for (int k = 0; k < 8; k++) {
+                if (bytes[i + k] != pattern[k]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        throw new AssertionError("value " + value + " not found");
+    }
+
+    /**
+     * Issue 25, item 5: the header is checked with everything else before any of it is used. Before,
+     * bounds moved out of view made the scene analysis leave the mesh out, so the entry was never
+     * read and never failed its checksum: the mesh was missing from every image without a word; a
+     * damaged Kd warned "parsed again" but rendered with the header's colour.
+     */
+    @Test
+    void aDamagedHeaderIsNeverUsed() throws IOException, SceneException {
+        Path scene = scene("");
+        grid(8);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        byte[] good = Files.readAllBytes(entry);
+        BBox box = reference.mesh().mesh().bounds();
+        // the bounds moved 1000 units to the side: out of the camera's view
+        byte[] moved = good.clone();
+        ByteBuffer.wrap(moved).putDouble(find(good, box.x0()), box.x0() + 1000).putDouble(find(good, box.x1()), box.x1() + 1000);
+        Files.write(entry, moved);
+        expectRebuilt(scene, reference, "its checksum does not match");
+        // material a's Kd 0.8 0.3 0.2 made green
+        byte[] recoloured = good.clone();
+        ByteBuffer.wrap(recoloured).putDouble(find(good, 0.8), 0).putDouble(find(good, 0.3), 1);
+        Files.write(entry, recoloured);
+        expectRebuilt(scene, reference, "its checksum does not match");
+    }
+
+    /**
+     * Issue 25, item 6: an entry is read once. Before, its header was read when the scene was loaded
+     * and its arrays when it was prepared, through two opens: an entry replaced in between rendered
+     * one version's geometry with the other's materials and bounds, silently.
+     */
+    @Test
+    void anEntryReplacedAfterLoadingIsNotMixedIn() throws IOException, SceneException {
+        Path scene = scene("");
+        // another valid entry: the grid of 4 written by the same program, in another folder
+        String grid4 = Files.readString(grid(4));
+        Path other = Files.createDirectories(dir.resolve("other"));
+        Files.copy(dir.resolve("grid.mtl"), other.resolve("grid.mtl"));
+        Files.writeString(other.resolve("grid.obj"), grid4);
+        Files.copy(scene, other.resolve("s.yaml"));
+        run(other.resolve("s.yaml"), MeshCache.in(other.resolve("cache")));
+        byte[] otherEntry;
+        try (Stream<Path> files = Files.list(other.resolve("cache"))) {
+            otherEntry = Files.readAllBytes(files.findFirst().orElseThrow());
+        }
+        grid(8);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        Run mixed = run(scene, cache(), () -> Files.write(entry, otherEntry));
+        assertTrue(mentions(mixed.report(), "read from the mesh cache"), mixed.report().statistics().toString());
+        assertArrayEquals(reference.image(), mixed.image(), "the entry as it was when the scene was loaded");
+        assertEquals(List.of(), mixed.report().warnings());
     }
 
     @Test
