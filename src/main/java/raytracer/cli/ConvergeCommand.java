@@ -25,6 +25,7 @@ import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
 import raytracer.image.AtomicFile;
 import raytracer.image.ErrorMetrics;
+import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.LoadedScene;
@@ -259,6 +260,9 @@ final class ConvergeCommand implements Callable<Integer> {
                 + 2 * Sampler.MAX_SAMPLES + ", got " + referenceSpp);
         usageIf(threads < 1 || threads > Workers.MAX_THREADS, "--threads must be 1 to " + Workers.MAX_THREADS + ", got " + threads);
         usageIf(cacheDir != null && cacheDir.toString().isEmpty(), "--cache must name a folder, got an empty name");
+        FileKind cacheKind = cacheDir == null ? FileKind.MISSING : FileKind.of(cacheDir);
+        usageIf(cacheKind != FileKind.DIRECTORY && cacheKind != FileKind.MISSING,
+                "--cache " + cacheDir + " is " + cacheKind.words() + ", not a folder");
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
         usageIf(height != null && height < 1, "--height must be at least 1, got " + height);
         usageIf(!List.of("auto", "closed-form", "self").contains(reference) && !reference.toLowerCase(Locale.ROOT).endsWith(".pfm"),
@@ -331,6 +335,9 @@ final class ConvergeCommand implements Callable<Integer> {
         }
         ReferenceCache cache = noCache ? null
             : new ReferenceCache(cacheDir != null ? cacheDir : ReferenceCache.defaultDir(System.getenv(), System.getProperty("user.home")));
+        if (cache != null) {
+            cache.checkFolder();
+        }
         return ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache, this::render, note);
     }
 

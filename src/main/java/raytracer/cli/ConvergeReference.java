@@ -129,7 +129,8 @@ final class ConvergeReference {
                           + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n");
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
-        Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);
+        Optional<Film> cached = file == null ? Optional.empty()
+            : cache.load(file, why -> note.println("converge: reference: the cached " + file + " " + why + "; rendering it again"));
         OptionalDouble noise = file == null ? OptionalDouble.empty() : cache.noise(file);
         if (cached.isPresent() && noise.isPresent() && cached.get().width() == vp.hres() && cached.get().height() == vp.vres()) {
             note.printf("converge: reference: %s (%s, seeds %d and %d; reused)%n", file, what, seed, other);

@@ -59,6 +59,17 @@ public final class ImageWriters {
         AtomicFile.replace(path, out -> writePfm(film, exposure, out));
     }
 
+    /** The bytes of the PFM {@link #writePfm} writes. */
+    public static byte[] pfmBytes(Film film, double exposure) {
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        try {
+            writePfm(film, exposure, bytes);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e); // a byte array does not fail
+        }
+        return bytes.toByteArray();
+    }
+
     /**
      * Portable float map: header "PF", size, -1 for little endian; rows from the bottom. Every value
      * is finite (see {@link #finite}), so a reader never meets Inf or NaN.
@@ -97,7 +108,11 @@ public final class ImageWriters {
      * is not one, or is cut short, is an IOException naming the file and what is wrong.
      */
     public static Film readPfm(Path path) throws IOException {
-        byte[] bytes = java.nio.file.Files.readAllBytes(path);
+        return readPfm(java.nio.file.Files.readAllBytes(path), path);
+    }
+
+    /** As {@link #readPfm(Path)}, from the file's bytes already read; {@code path} names it in messages. */
+    public static Film readPfm(byte[] bytes, Path path) throws IOException {
         int[] pos = {0};
         String magic = token(bytes, pos);
         if (magic.equals("Pf")) {
