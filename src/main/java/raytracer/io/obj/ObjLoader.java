@@ -14,6 +14,7 @@ import java.util.regex.Pattern;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
 import raytracer.image.FileKind;
+import raytracer.shapes.Triangle;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -172,7 +173,7 @@ public final class ObjLoader {
         line = text;
         if (vertexPlain.reset(text).matches()) {
             for (int g = 1; g <= 3; g++) {
-                positions.add(finite(vertexPlain, g));
+                positions.add(coordinate(vertexPlain, g));
             }
             return;
         }
@@ -189,7 +190,7 @@ public final class ObjLoader {
             case "v" -> {
                 require(vertex.reset(text).matches(), "'v x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
-                    positions.add(finite(vertex, g));
+                    positions.add(coordinate(vertex, g));
                 }
             }
             case "vt" -> {
@@ -228,6 +229,16 @@ public final class ObjLoader {
         double v = Character.isLetter(last) ? Double.NaN : Numbers.parseDouble(line, m.start(group), m.end(group));
         if (!Double.isFinite(v)) {
             throw error("coordinate '" + m.group(group) + "' is not a finite number");
+        }
+        return v;
+    }
+
+    /** A vertex coordinate: finite, and within what a triangle holds ({@link Triangle#MAX_COORDINATE}). */
+    private double coordinate(Matcher m, int group) throws ObjException {
+        double v = finite(m, group);
+        if (Math.abs(v) > Triangle.MAX_COORDINATE) {
+            throw error("coordinate '" + m.group(group) + "' is larger than " + Triangle.MAX_COORDINATE + ", the most a "
+                        + "triangle's vertex may have (its edges' cross product must square to a double)");
         }
         return v;
     }

@@ -17,6 +17,7 @@ import raytracer.accel.FlatBVH;
 import raytracer.image.AtomicFile;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.math.BBox;
+import raytracer.shapes.Triangle;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -166,10 +167,11 @@ final class MeshCacheFile {
         return new Contents(header, mesh, bvh);
     }
 
+    /** Vertex coordinates: finite and within what a triangle holds ({@link Triangle#MAX_COORDINATE}), as the OBJ reader requires. */
     private static void requireFinite(double[] values, String what) throws IOException {
         for (double v : values) {
-            if (!Double.isFinite(v)) {
-                throw new IOException("a " + what + " is not finite");
+            if (!(Math.abs(v) <= Triangle.MAX_COORDINATE)) {
+                throw new IOException("a " + what + " coordinate is " + v);
             }
         }
     }
