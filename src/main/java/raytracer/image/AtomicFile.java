@@ -24,7 +24,8 @@ import java.util.concurrent.ThreadLocalRandom;
  * character device ({@code /dev/null}, a terminal) is written into as it is, anything else that is
  * not a regular file is refused, and the result has the permissions of the file it replaces, or
  * the umask's ({@code Files.createTempFile} would make it owner-only). A file of this program's own,
- * such as a cache entry ({@link #replace}), replaces whatever is at its name, link or not.
+ * such as a cache entry ({@link #replace}), replaces whatever is at its name, link or not, and
+ * always has the umask's permissions.
  */
 public final class AtomicFile {
 
@@ -84,10 +85,12 @@ public final class AtomicFile {
 
     /**
      * Writes a file of this program's own (a cache entry): whatever is at {@code target}, a link or
-     * anything else, is replaced by the new regular file.
+     * anything else, is replaced by a new regular file with the umask's permissions. Copying the
+     * replaced file's would keep a mode-000 entry unreadable for ever, or make one that replaced a
+     * link to a world-writable file world-writable.
      */
     public static void replace(Path target, Body body) throws IOException {
-        atomically(target, body, true);
+        atomically(target, body, false);
     }
 
     private static void atomically(Path target, Body body, boolean keepPermissions) throws IOException {

@@ -11,8 +11,11 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -255,6 +258,41 @@ class MeshCacheTest {
         assertTrue(mentions(mixed.report(), "read from the mesh cache"), mixed.report().statistics().toString());
         assertArrayEquals(reference.image(), mixed.image(), "the entry as it was when the scene was loaded");
         assertEquals(List.of(), mixed.report().warnings());
+    }
+
+    /**
+     * Issue 25, item 13: a rewritten entry gets the umask's permissions, not those of what it
+     * replaces. Before, a mode-000 entry was rebuilt every run with mode 000 again (for anyone but
+     * root: a warning each time, never healing), and an entry that was a link to a world-writable
+     * file was rewritten world-writable.
+     */
+    @Test
+    void aRewrittenEntryHasTheUmasksPermissions() throws IOException, SceneException {
+        Path scene = scene("");
+        grid(6);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        Path fresh = dir.resolve("fresh");
+        Files.newOutputStream(fresh).close();
+        Set<PosixFilePermission> umask = Files.getPosixFilePermissions(fresh);
+        byte[] damaged = Files.readAllBytes(entry);
+        damaged[damaged.length / 2] ^= 1;
+        Files.write(entry, damaged);
+        Files.setPosixFilePermissions(entry, Set.of());
+        // root reads it anyway and finds the damage; anyone else cannot read it: either way it is rewritten
+        Run rebuilt = run(scene, cache());
+        assertArrayEquals(reference.image(), rebuilt.image());
+        assertEquals(umask, Files.getPosixFilePermissions(entry), "the umask's permissions, not 000");
+        // an entry that is a link to a world-writable file this test made
+        Path open = dir.resolve("open");
+        Files.write(open, damaged);
+        Files.setPosixFilePermissions(open, PosixFilePermissions.fromString("rw-rw-rw-"));
+        Files.delete(entry);
+        Files.createSymbolicLink(entry, open);
+        run(scene, cache());
+        assertFalse(Files.isSymbolicLink(entry), "the link is replaced by an entry of this program's own");
+        assertEquals(umask, Files.getPosixFilePermissions(entry));
+        assertArrayEquals(damaged, Files.readAllBytes(open), "the link's target is untouched");
     }
 
     @Test
