@@ -11,10 +11,11 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
-import raytracer.accel.MeshBVH;
+import raytracer.accel.FlatBVH;
 import raytracer.image.FileKind;
 import raytracer.image.IoReason;
 import raytracer.io.obj.ObjModel;
+import raytracer.shapes.mesh.Mesh;
 
 /**
  * Where parsed meshes and their BVHs are kept between runs ({@link MeshCacheFile}), so that a mesh
@@ -164,7 +165,7 @@ public final class MeshCache {
          * Writes the entry for {@code model} as built into {@code mesh}; a model that warned, or a
          * folder that cannot be written, is not cached (the second with a warning). True if written.
          */
-        boolean store(ObjModel model, MeshBVH mesh, Consumer<String> warn) {
+        boolean store(ObjModel model, Mesh mesh, FlatBVH bvh, Consumer<String> warn) {
             if (source == null || !model.warnings().isEmpty()) {
                 return false;
             }
@@ -178,7 +179,7 @@ public final class MeshCache {
                     model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials(),
                     model.sheets());
                 cache.createDir();
-                MeshCacheFile.write(file, h, mesh.mesh(), mesh.bvh());
+                MeshCacheFile.write(file, h, mesh, bvh);
                 return true;
             } catch (IOException e) {
                 warn.accept("cannot write the mesh cache " + file + " (" + IoReason.of(e) + "); the mesh will be parsed again next time");

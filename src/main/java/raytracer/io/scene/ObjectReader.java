@@ -34,7 +34,7 @@ final class ObjectReader {
     }
 
     static GeometricObject read(Source source, Node node, Map<String, Material> materials, LoadReport report,
-                                TextureReader textures, MeshCache cache) throws SceneException {
+                                TextureReader textures, MeshReader meshes) throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
@@ -46,7 +46,7 @@ final class ObjectReader {
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
         if (kind.equals("mesh")) {
-            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, report, textures, cache);
+            shape = meshes.read(o, o.has("material") ? material(o, materials) : null, report, textures);
         } else {
             try {
                 shape = shape(kind, o);

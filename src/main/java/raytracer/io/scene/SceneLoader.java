@@ -186,9 +186,11 @@ public final class SceneLoader {
         if (objects.isEmpty()) {
             report.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
         }
+        MeshReader meshes = new MeshReader(cache);
         for (Node object : objects) {
-            world.addObject(ObjectReader.read(source, object, materials, report, textures, cache));
+            world.addObject(ObjectReader.read(source, object, materials, report, textures, meshes));
         }
+        meshes.reportSharing(report);
         return new LoadedScene(world, rayTree, encoding, report);
     }
 
