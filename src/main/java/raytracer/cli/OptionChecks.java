@@ -1,6 +1,7 @@
 package raytracer.cli;
 
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
@@ -63,8 +64,29 @@ final class OptionChecks {
         }
         Path meshCache = o.noCache ? null
             : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
+        long meshCacheMax = cacheMax(o.cacheMax, System.getenv());
         return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
-                                 meshCache);
+                                 meshCache, meshCacheMax);
+    }
+
+    /**
+     * The mesh cache's cap: --cache-max, else the environment's {@value MeshCache#MAX_ENV}, else
+     * {@link MeshCache#DEFAULT_MAX_BYTES}; a size that does not parse is a usage error naming its source.
+     */
+    long cacheMax(String option, Map<String, String> environment) {
+        String env = environment.get(MeshCache.MAX_ENV);
+        String text = option != null ? option : env != null && !env.isBlank() ? env : null;
+        if (text == null) {
+            return MeshCache.DEFAULT_MAX_BYTES;
+        }
+        String source = option != null ? "--cache-max" : MeshCache.MAX_ENV;
+        return usage(() -> {
+            try {
+                return MeshCache.parseSize(text);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(source + ": " + e.getMessage());
+            }
+        });
     }
 
     private static boolean parseView(String view) {

@@ -12,6 +12,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
 import raytracer.core.ViewPlane;
+import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 
 /**
@@ -89,6 +90,11 @@ public final class RenderCommand implements Callable<Integer> {
             description = "Where parsed meshes and their BVHs are cached. Default: $XDG_CACHE_HOME/raytracer/meshes, "
                           + "or ~/.cache/raytracer/meshes.")
     Path cacheDir;
+
+    @Option(names = "--cache-max", paramLabel = "SIZE",
+            description = "The most the mesh cache's entries may take together, e.g. 512M or 4G; past it the least recently "
+                          + "used are deleted. Default: $" + MeshCache.MAX_ENV + ", else 1G.")
+    String cacheMax;
 
     @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
     boolean noCache;

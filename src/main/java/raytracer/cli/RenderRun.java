@@ -135,7 +135,7 @@ final class RenderRun {
 
     private LoadedScene loadScene() throws SceneException, IOException {
         if (request.scene() != null) {
-            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache()));
+            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache(), request.meshCacheMax()));
         }
         try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
             if (in == null) {

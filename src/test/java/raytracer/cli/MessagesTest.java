@@ -153,7 +153,8 @@ class MessagesTest {
 
     @Test
     void theCacheSaysWhyInWordsNotWithAPath() throws IOException {
-        Files.writeString(dir.resolve("t.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n".repeat(3000));
+        // large enough to be cached (MeshCache.MIN_OBJ_BYTES)
+        Files.writeString(dir.resolve("t.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n".repeat(30_000));
         Path s = scene("image: {width: 4, height: 4, samples: 1}\nobjects:\n  - {type: mesh, file: t.obj}\n");
         Path cache = Files.writeString(dir.resolve("cache"), "a file where the folder should be");
         Result r = RenderCommandTest.run(s.toString(), "-o", dir.resolve("o.png").toString(), "--cache-dir", cache.toString());

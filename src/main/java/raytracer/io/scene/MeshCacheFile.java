@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.TimeUnit;
+import java.util.zip.CRC32;
 import java.util.zip.CRC32C;
 import raytracer.accel.BvhFile;
 import raytracer.accel.FlatBVH;
@@ -40,15 +40,19 @@ final class MeshCacheFile {
      * The layout above and what the OBJ reader and {@link MeshReader} make of a file: add 1 when
      * either changes, so that files written before are rebuilt rather than trusted.
      */
-    static final int VERSION = 3;
+    static final int VERSION = 4;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
     private MeshCacheFile() {
     }
 
-    /** The identity of a file a cached mesh was made from: where it was, its size, time and checksum. */
-    record Stamp(String path, long size, long modified, int crc) {
+    /**
+     * The identity of a file a cached mesh was made from: its content (size, and CRC-32C and CRC-32
+     * of its bytes as one 64-bit digest) and, for an MTL file, its path relative to the OBJ file's
+     * folder (empty for the OBJ file itself, which the entry's name finds by content).
+     */
+    record Stamp(String path, long size, long digest) {
     }
 
     /**
@@ -65,9 +69,17 @@ final class MeshCacheFile {
     record Contents(Header header, Mesh mesh, FlatBVH bvh) {
     }
 
-    /** Writes the file atomically (temporary file and rename). */
-    static void write(Path file, Header header, Mesh mesh, FlatBVH bvh) throws IOException {
-        byte[] head = MeshCacheHeader.encode(header);
+    /** Bytes of an entry of {@code mesh} and {@code bvh}, but for its header (a few hundred bytes more). */
+    static long size(Mesh mesh, FlatBVH bvh) {
+        return align(PREAMBLE) + arrays(mesh) + align(BvhFile.size(bvh)) + 4;
+    }
+
+    /**
+     * Writes the file atomically (temporary file and rename); texture paths are written relative
+     * to {@code folder}, the OBJ file's.
+     */
+    static void write(Path file, Header header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
+        byte[] head = MeshCacheHeader.encode(header, folder);
         long length = align(PREAMBLE + head.length) + arrays(mesh) + align(BvhFile.size(bvh)) + 4;
         if (length > Integer.MAX_VALUE - 8) {
             throw new IOException("the mesh is too large to cache (" + length + " bytes)");
@@ -96,7 +108,7 @@ final class MeshCacheFile {
      * every index and material id in range, the tree's links. An IOException says why the file is
      * not one this program can use.
      */
-    static Contents read(Path file) throws IOException {
+    static Contents read(Path file, Path folder) throws IOException {
         ByteBuffer in;
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             long size = channel.size();
@@ -118,18 +130,18 @@ final class MeshCacheFile {
             throw new IOException("its checksum does not match its contents");
         }
         try {
-            return decode(in, size);
+            return decode(in, size, folder);
         } catch (IllegalArgumentException | IndexOutOfBoundsException | BufferUnderflowException e) {
             throw new IOException("its contents are inconsistent (" + e.getMessage() + ")", e);
         }
     }
 
     /** The header and arrays of a file whose checksum matched, each checked against the others. */
-    private static Contents decode(ByteBuffer in, int size) throws IOException {
+    private static Contents decode(ByteBuffer in, int size, Path folder) throws IOException {
         int headerLength = checkPreamble(in, size);
         byte[] head = new byte[headerLength];
         in.get(head);
-        Header header = MeshCacheHeader.decode(head);
+        Header header = MeshCacheHeader.decode(head, folder);
         if (24L * header.vertices() + 12L * header.triangles() > size) {
             throw new IOException("its header counts more vertices and triangles than it holds");
         }
@@ -268,17 +280,19 @@ final class MeshCacheFile {
         buffer.flip();
     }
 
-    /** The size, time and checksum of a file now. */
-    static Stamp stamp(Path file) throws IOException {
+    /** The content stamp of a file now, recorded under {@code path}. */
+    static Stamp stamp(Path file, String path) throws IOException {
         long size = Files.size(file);
-        long modified = Files.getLastModifiedTime(file).to(TimeUnit.NANOSECONDS);
-        CRC32C crc = new CRC32C();
+        CRC32C crcC = new CRC32C();
+        CRC32 crc = new CRC32();
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             // a mapping holds at most 2 GiB: larger files go in pieces
             for (long at = 0; at < size; at += 1L << 30) {
-                crc.update(channel.map(FileChannel.MapMode.READ_ONLY, at, Math.min(1L << 30, size - at)));
+                ByteBuffer piece = channel.map(FileChannel.MapMode.READ_ONLY, at, Math.min(1L << 30, size - at));
+                crcC.update(piece.duplicate());
+                crc.update(piece);
             }
         }
-        return new Stamp(file.toAbsolutePath().normalize().toString(), size, modified, (int) crc.getValue());
+        return new Stamp(path, size, crcC.getValue() << 32 | crc.getValue());
     }
 }

@@ -105,7 +105,7 @@ final class MeshReader {
         MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
         if (cached != null) {
             report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
-            cached.libraries().forEach(library -> report.addInput(Path.of(library.path())));
+            cached.libraries().forEach(library -> report.addInput(file.toAbsolutePath().getParent().resolve(library.path())));
             return new SharedMesh(file, builder, report, lookup, readNanos);
         }
         long start = System.nanoTime();

@@ -125,12 +125,15 @@ final class SharedMesh {
         String cached = "";
         if (lookup != null) {
             long write = System.nanoTime();
-            if (lookup.store(model, mesh, bvh, report::addWarning)) {
+            MeshCache.Stored stored = lookup.store(model, mesh, bvh, report::addWarning);
+            if (stored.written()) {
                 long wrote = System.nanoTime() - write;
                 report.recordPrepareTiming("write " + name + " to the mesh cache", wrote);
-                cached = String.format(", written to the mesh cache in %.3f s", wrote / 1e9);
-            } else if (!model.warnings().isEmpty()) {
-                cached = ", not cached (its parse warned)";
+                cached = String.format(", written to the mesh cache in %.3f s", wrote / 1e9)
+                         + (stored.evicted() == 0 ? "" : " (" + stored.evicted() + " least recently used entr"
+                            + (stored.evicted() == 1 ? "y" : "ies") + " evicted to stay under the cache's cap)");
+            } else if (stored.whyNot() != null) {
+                cached = ", not cached (" + stored.whyNot() + ")";
             }
         }
         report.addStatistic(String.format("mesh %s: parsed in %.3f s, %s BVH built in %.3f s%s", name, parseNanos / 1e9,

@@ -76,7 +76,8 @@ class MeshCacheTest {
     }
 
     private MeshCache cache() {
-        return MeshCache.in(dir.resolve("cache"));
+        // every mesh cached, however small
+        return MeshCache.in(dir.resolve("cache"), Long.MAX_VALUE, 0);
     }
 
     /** A load, prepared, with its mesh object, its report and its image (PFM bytes). */
@@ -172,9 +173,16 @@ class MeshCacheTest {
         other[8]++;
         Files.write(entry, other);
         expectRebuilt(scene, reference, "written by another version");
-        // the OBJ changed (a comment added: the same mesh, another file)
+        // the OBJ changed (a comment added: the same mesh, another file): entries are keyed by content,
+        // so this is another entry, written beside the old one (which the cap will evict when it is the least used)
         Files.writeString(obj, Files.readString(obj) + "# edited\n");
-        expectRebuilt(scene, reference, "is stale (the OBJ file changed since)");
+        Run edited = run(scene, cache());
+        assertEquals(List.of(), edited.report().warnings());
+        assertTrue(mentions(edited.report(), "written to the mesh cache"), edited.report().statistics().toString());
+        assertArrayEquals(reference.image(), edited.image());
+        try (Stream<Path> files = Files.list(dir.resolve("cache"))) {
+            assertEquals(2, files.count());
+        }
         // an MTL file it read changed
         Files.writeString(dir.resolve("grid.mtl"), Files.readString(dir.resolve("grid.mtl")) + "# edited\n");
         expectRebuilt(scene, reference, "grid.mtl changed since");
@@ -246,7 +254,7 @@ class MeshCacheTest {
         Files.copy(dir.resolve("grid.mtl"), other.resolve("grid.mtl"));
         Files.writeString(other.resolve("grid.obj"), grid4);
         Files.copy(scene, other.resolve("s.yaml"));
-        run(other.resolve("s.yaml"), MeshCache.in(other.resolve("cache")));
+        run(other.resolve("s.yaml"), MeshCache.in(other.resolve("cache"), Long.MAX_VALUE, 0));
         byte[] otherEntry;
         try (Stream<Path> files = Files.list(other.resolve("cache"))) {
             otherEntry = Files.readAllBytes(files.findFirst().orElseThrow());

@@ -70,7 +70,7 @@ class SharedMeshTest {
     @Test
     void objectsNamingOneFileShareItsArraysAndTree() throws IOException, SceneException {
         Files.writeString(dir.resolve("tent.obj"), TENT);
-        for (MeshCache cache : new MeshCache[] {null, MeshCache.in(dir.resolve("cache")), MeshCache.in(dir.resolve("cache"))}) {
+        for (MeshCache cache : new MeshCache[] {null, MeshCache.in(dir.resolve("cache"), Long.MAX_VALUE, 0), MeshCache.in(dir.resolve("cache"), Long.MAX_VALUE, 0)}) {
             World world = prepared(scene("tent.obj", "tent.obj", "tent.obj", "tent.obj"), cache);
             List<GeometricObject> objects = world.objects();
             assertEquals(4, objects.size());
