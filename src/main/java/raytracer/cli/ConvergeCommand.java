@@ -19,11 +19,13 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
+import raytracer.core.Sampler;
 import raytracer.core.ViewPlane;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.World;
 import raytracer.image.AtomicFile;
 import raytracer.image.ErrorMetrics;
+import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.io.scene.SceneException;
 import raytracer.io.scene.LoadedScene;
@@ -92,7 +94,9 @@ final class ConvergeCommand implements Callable<Integer> {
     @Option(names = "--plot", paramLabel = "FILE.png", description = "The log-log plot. Default: <scene name>-convergence.png")
     Path plot;
 
-    @Option(names = "--csv", paramLabel = "FILE", description = "Also write the table as comma-separated values.")
+    @Option(names = "--csv", paramLabel = "FILE",
+            description = "Also write the table as comma-separated values; - writes them to standard output, alone (the table "
+                          + "then goes to standard error).")
     Path csv;
 
     @Option(names = "--metric", paramLabel = "M",
@@ -145,7 +149,7 @@ final class ConvergeCommand implements Callable<Integer> {
             String message = e instanceof OutOfMemoryError
                 ? "out of memory; give Java more heap, e.g. java -Xmx8g -jar render.jar converge ..."
                 : e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
-            err.println("render converge: error: " + message.replace('\n', ' '));
+            err.println("render converge: error: " + Terminal.line(message));
             if (verbose) {
                 e.printStackTrace(err);
             }
@@ -166,11 +170,10 @@ final class ConvergeCommand implements Callable<Integer> {
     private int converge(List<ConvergeConfig> curves, PrintWriter err) throws Exception {
         PrintWriter note = quiet ? new PrintWriter(PrintWriter.nullWriter()) : err;
         Path plotFile = plot != null ? plot : Path.of(stem(scene) + "-convergence.png");
-        checkWritable(plotFile, ".png");
-        if (csv != null) {
-            checkWritable(csv, "");
-        }
+        boolean csvToStdout = csv != null && csv.toString().equals("-");
+        checkOutputs(plotFile, csvToStdout);
         LoadedScene base = load(ConvergeConfig.SCENE, err);
+        checkNotInputs(base, plotFile, csvToStdout);
         ViewPlane vp = base.world().viewPlane();
         ConvergeReference.Image ref = reference(base, note);
         List<ConvergeRow> rows = new ArrayList<>();
@@ -178,7 +181,8 @@ final class ConvergeCommand implements Callable<Integer> {
         for (ConvergeConfig config : curves) {
             measure(config, ref.film(), vp.exposure(), rows, total, note);
         }
-        PrintWriter out = spec.commandLine().getOut();
+        // with --csv -, standard output is the CSV alone, and the table is a note
+        PrintWriter out = csvToStdout ? note : spec.commandLine().getOut();
         out.print(ConvergeReport.table(rows));
         ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
             "slope of log error against log seconds, %s: %.2f%n", name, slope));
@@ -190,7 +194,11 @@ final class ConvergeCommand implements Callable<Integer> {
             note.println("converge: metric: " + DISPLAYED);
         }
         out.flush();
-        if (csv != null) {
+        if (csvToStdout) {
+            PrintWriter stdout = spec.commandLine().getOut();
+            stdout.print(ConvergeReport.csv(rows));
+            stdout.flush();
+        } else if (csv != null) {
             AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
         }
         String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
@@ -198,6 +206,31 @@ final class ConvergeCommand implements Callable<Integer> {
         ConvergeReport.chart(title, rows, noise).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
+    }
+
+    /** Fails before the first render, not after the last, when an output could not be written: a usage error. */
+    private void checkOutputs(Path plotFile, boolean csvToStdout) {
+        usageIf(!plotFile.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png"),
+                "cannot write " + plotFile + ": the plot is a PNG file, give a name ending in .png");
+        String why = OutputFile.whyNotWritable(plotFile);
+        usageIf(why != null, "cannot write " + plotFile + ": " + why);
+        if (csv != null && !csvToStdout) {
+            why = OutputFile.whyNotWritable(csv);
+            usageIf(why != null, "cannot write " + csv + ": " + why);
+            usageIf(OutputFile.same(csv, plotFile), "--plot and --csv name the same file, " + csv);
+        }
+    }
+
+    /** Refuses an output that the run reads: the scene, a file it reads, the --reference image. */
+    private void checkNotInputs(LoadedScene base, Path plotFile, boolean csvToStdout) {
+        Path referenceFile = reference.toLowerCase(Locale.ROOT).endsWith(".pfm") ? Path.of(reference) : null;
+        List<Path> inputs = base.report().inputs();
+        String why = OutputFile.whyInput(plotFile, scene, inputs, referenceFile);
+        usageIf(why != null, "cannot write the plot " + plotFile + ": " + why);
+        if (csv != null && !csvToStdout) {
+            why = OutputFile.whyInput(csv, scene, inputs, referenceFile);
+            usageIf(why != null, "cannot write the CSV " + csv + ": " + why);
+        }
     }
 
     /** True when errors are taken on the displayed values ({@code --metric srgb}) rather than on radiance. */
@@ -211,7 +244,7 @@ final class ConvergeCommand implements Callable<Integer> {
             spp = new ArrayList<>(List.of(1, 4, 16, 64));
         }
         for (int n : spp) {
-            usageIf(n < 1, "--spp values must be at least 1, got " + n);
+            usageIf(n < 1 || n > Sampler.MAX_SAMPLES, "--spp values must be 1 to " + Sampler.MAX_SAMPLES + ", got " + n);
         }
         for (double t : budgets) {
             usageIf(!(t > 0) || Double.isInfinite(t), "--time values must be positive seconds, got " + t);
@@ -222,8 +255,14 @@ final class ConvergeCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());
         }
         usageIf(!List.of("linear", "srgb").contains(metric), "--metric must be linear or srgb, got '" + metric + "'");
-        usageIf(referenceSpp < 1, "--reference-spp must be at least 1, got " + referenceSpp);
-        usageIf(threads < 1, "--threads must be at least 1, got " + threads);
+        // rendered in two halves of half the count each
+        usageIf(referenceSpp < 1 || referenceSpp > 2 * Sampler.MAX_SAMPLES, "--reference-spp must be 1 to "
+                + 2 * Sampler.MAX_SAMPLES + ", got " + referenceSpp);
+        usageIf(threads < 1 || threads > Workers.MAX_THREADS, "--threads must be 1 to " + Workers.MAX_THREADS + ", got " + threads);
+        usageIf(cacheDir != null && cacheDir.toString().isEmpty(), "--cache must name a folder, got an empty name");
+        FileKind cacheKind = cacheDir == null ? FileKind.MISSING : FileKind.of(cacheDir);
+        usageIf(cacheKind != FileKind.DIRECTORY && cacheKind != FileKind.MISSING,
+                "--cache " + cacheDir + " is " + cacheKind.words() + ", not a folder");
         usageIf(width != null && width < 1, "--width must be at least 1, got " + width);
         usageIf(height != null && height < 1, "--height must be at least 1, got " + height);
         usageIf(!List.of("auto", "closed-form", "self").contains(reference) && !reference.toLowerCase(Locale.ROOT).endsWith(".pfm"),
@@ -258,7 +297,7 @@ final class ConvergeCommand implements Callable<Integer> {
         LoadedScene loaded = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
         World world = loaded.world();
         if (!quiet && warnings != null) {
-            loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + w));
+            loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + Terminal.line(w)));
         }
         ViewPlane vp = world.viewPlane();
         if (config.sampler() != null) {
@@ -296,6 +335,9 @@ final class ConvergeCommand implements Callable<Integer> {
         }
         ReferenceCache cache = noCache ? null
             : new ReferenceCache(cacheDir != null ? cacheDir : ReferenceCache.defaultDir(System.getenv(), System.getProperty("user.home")));
+        if (cache != null) {
+            cache.checkFolder();
+        }
         return ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache, this::render, note);
     }
 
@@ -319,6 +361,11 @@ final class ConvergeCommand implements Callable<Integer> {
             ErrorMetrics error = displayedMetric() ? ErrorMetrics.compareDisplayed(film, exposure, ref)
                 : ErrorMetrics.compare(film, exposure, ref);
             rows.add(new ConvergeRow(name, stats.samplesPerPixel(), lights, stats.seconds(), error));
+            String dropped = RunReport.droppedLine(stats);
+            if (dropped != null) {
+                // even with --quiet: the error measured is then of another image than the scene's
+                spec.commandLine().getErr().println("render converge: warning: " + name + ", " + n + " spp: " + dropped);
+            }
             note.printf(Locale.ROOT, "converge: [%d/%d] %s: %d spp, %.3f s, relative RMSE %.4g%n", rows.size(), total, name,
                         stats.samplesPerPixel(), stats.seconds(), error.relativeRmse());
         }
@@ -347,17 +394,5 @@ final class ConvergeCommand implements Callable<Integer> {
         String name = file.getFileName().toString();
         int dot = name.lastIndexOf('.');
         return dot > 0 ? name.substring(0, dot) : name;
-    }
-
-    /** Fails before the first render, not after the last, when an output could not be written. */
-    private static void checkWritable(Path out, String extension) throws IOException {
-        if (!out.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(extension)) {
-            throw new IOException("cannot write " + out + ": the plot is a PNG file, give a name ending in .png");
-        }
-        Path dir = out.toAbsolutePath().getParent();
-        if (Files.isDirectory(out) || dir == null || !Files.isDirectory(dir) || !Files.isWritable(dir)) {
-            throw new IOException("cannot write " + out + ": " + (Files.isDirectory(out) ? "it is a directory"
-                                  : "directory " + dir + " does not exist or is not writable"));
-        }
     }
 }

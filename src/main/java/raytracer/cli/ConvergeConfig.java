@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
+import raytracer.core.Sampler;
 import raytracer.samplers.Samplers;
 
 /**
@@ -59,8 +60,8 @@ record ConvergeConfig(String label, String sampler, Integer lightSamples, Double
             }
             case "light-samples" -> {
                 int n = parseInt(value, where + "light-samples");
-                if (n < 1) {
-                    throw new IllegalArgumentException(where + "light-samples must be at least 1, got " + n);
+                if (n < 1 || n > Sampler.MAX_SAMPLES) {
+                    throw new IllegalArgumentException(where + "light-samples must be 1 to " + Sampler.MAX_SAMPLES + ", got " + n);
                 }
                 yield new ConvergeConfig(label, sampler, n, cutoff);
             }

@@ -11,6 +11,7 @@ import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.io.scene.LoadedScene;
 import raytracer.image.ErrorMetrics;
+import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.ClosedFormReader;
@@ -33,8 +34,9 @@ final class ConvergeReference {
 
     /** A .pfm file of the image's size with finite values; anything else is an IOException naming the file. */
     static Film fromFile(Path file, int width, int height) throws IOException {
-        if (!Files.isRegularFile(file)) {
-            throw new IOException("cannot read reference " + file + ": " + (Files.isDirectory(file) ? "it is a directory" : "no such file"));
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null || !Files.isRegularFile(file)) {
+            throw new IOException("cannot read reference " + file + ": " + (notRegular != null ? notRegular : "no such file"));
         }
         Film film = ImageWriters.readPfm(file);
         if (film.width() != width || film.height() != height) {
@@ -127,7 +129,8 @@ final class ConvergeReference {
                           + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n");
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
-        Optional<Film> cached = file == null ? Optional.empty() : cache.load(file);
+        Optional<Film> cached = file == null ? Optional.empty()
+            : cache.load(file, why -> note.println("converge: reference: the cached " + file + " " + why + "; rendering it again"));
         OptionalDouble noise = file == null ? OptionalDouble.empty() : cache.noise(file);
         if (cached.isPresent() && noise.isPresent() && cached.get().width() == vp.hres() && cached.get().height() == vp.vres()) {
             note.printf("converge: reference: %s (%s, seeds %d and %d; reused)%n", file, what, seed, other);

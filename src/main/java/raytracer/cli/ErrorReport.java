@@ -19,11 +19,15 @@ final class ErrorReport {
     private ErrorReport() {
     }
 
-    /** Makes {@code cli} report its failures on {@code err} as above; returns it. */
-    static CommandLine install(CommandLine cli, PrintWriter err) {
-        cli.setErr(err);
+    /**
+     * Makes {@code cli} report its failures on {@code err} as above, and print on {@code err} and
+     * {@code out} through {@link Terminal#escaping} (echoed names cannot drive the terminal); returns it.
+     */
+    static CommandLine install(CommandLine cli, PrintWriter out, PrintWriter err) {
+        cli.setErr(new PrintWriter(Terminal.escaping(err), true));
+        cli.setOut(new PrintWriter(Terminal.escaping(out), true));
         cli.setParameterExceptionHandler((ex, args) -> {
-            ex.getCommandLine().getErr().println("render: error: " + ex.getMessage() + " (see render --help)");
+            ex.getCommandLine().getErr().println("render: error: " + Terminal.line(ex.getMessage()) + " (see render --help)");
             return BAD_USAGE;
         });
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
@@ -59,12 +63,12 @@ final class ErrorReport {
         return option != null && Boolean.TRUE.equals(option.getValue());
     }
 
-    /** The exception's message on one line, or its class name when it has none. */
+    /** The exception's message on one bounded line ({@link Terminal#line}), or its class name when it has none. */
     static String oneLine(Throwable ex) {
         String message = ex.getMessage();
         if (message == null || message.isBlank()) {
             message = ex.getClass().getSimpleName();
         }
-        return message.replace('\n', ' ');
+        return Terminal.line(message);
     }
 }

@@ -1,6 +1,7 @@
 package raytracer.cli;
 
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
@@ -29,7 +30,7 @@ final class OptionChecks {
     RenderRequest check(RenderCommand o) {
         requireAtLeast("--width", o.width, 1);
         requireAtLeast("--height", o.height, 1);
-        requireAtLeast("--spp", o.samples, 1);
+        requireWithin("--spp", o.samples, 1, Sampler.MAX_SAMPLES);
         requireWithin("--max-depth", o.maxDepth, 0, ViewPlane.MAX_DEPTH);
         requireWithin("--threads", o.threads, 1, Workers.MAX_THREADS);
         requireAtLeast("--repeat", o.repeat, 1);
@@ -54,6 +55,10 @@ final class OptionChecks {
         FilterChoice filter = usage(o.filter::choice);
         SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
                                                       encoding);
+        if (o.cacheDir != null && o.cacheDir.toString().isEmpty()) {
+            // an empty path is the working directory, which is no place for cache files
+            throw new ParameterException(commandLine, "--cache-dir must name a folder, got an empty name");
+        }
         if (o.noCache && o.cacheDir != null) {
             throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
         }
@@ -66,8 +71,29 @@ final class OptionChecks {
         }
         Path meshCache = o.noCache ? null
             : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
+        long meshCacheMax = cacheMax(o.cacheMax, System.getenv());
         return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
-                                 meshCache, o.show);
+                                 meshCache, meshCacheMax, o.show);
+    }
+
+    /**
+     * The mesh cache's cap: --cache-max, else the environment's {@value MeshCache#MAX_ENV}, else
+     * {@link MeshCache#DEFAULT_MAX_BYTES}; a size that does not parse is a usage error naming its source.
+     */
+    long cacheMax(String option, Map<String, String> environment) {
+        String env = environment.get(MeshCache.MAX_ENV);
+        String text = option != null ? option : env != null && !env.isBlank() ? env : null;
+        if (text == null) {
+            return MeshCache.DEFAULT_MAX_BYTES;
+        }
+        String source = option != null ? "--cache-max" : MeshCache.MAX_ENV;
+        return usage(() -> {
+            try {
+                return MeshCache.parseSize(text);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(source + ": " + e.getMessage());
+            }
+        });
     }
 
     private static boolean parseView(String view) {

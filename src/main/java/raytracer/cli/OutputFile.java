@@ -1,10 +1,20 @@
 package raytracer.cli;
 
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collection;
+import raytracer.image.AtomicFile;
+import raytracer.image.FileKind;
 import raytracer.image.ImageWriters;
 
-/** Where the image goes: the default name, and whether the file can be written, known before rendering. */
+/**
+ * Where an output goes: the image's default name, and whether a file can be written, known before
+ * rendering. Nothing the user named is destroyed: an output that is one of the run's inputs is
+ * refused, a symbolic link is written through to its target, a FIFO or character device is
+ * written into ({@link raytracer.image.AtomicFile#write}).
+ */
 final class OutputFile {
     private OutputFile() {
     }
@@ -28,16 +38,78 @@ final class OutputFile {
         if (!ImageWriters.isSupported(out)) {
             return "unsupported extension (use one of " + extensions + ")";
         }
-        Path dir = out.toAbsolutePath().getParent();
+        return whyNotWritable(out);
+    }
+
+    /** Why any file could not be written to {@code out} (whatever its name), or null if it can be. */
+    static String whyNotWritable(Path out) {
+        Path file;
+        try {
+            file = AtomicFile.destination(out);
+        } catch (IOException e) {
+            return "too many levels of symbolic links (a loop?)";
+        }
+        Path name = file.getFileName();
+        int bytes = name == null ? 0 : name.toString().getBytes(StandardCharsets.UTF_8).length;
+        if (bytes > AtomicFile.MAX_NAME_BYTES) {
+            return "the file name is " + bytes + " bytes long; at most " + AtomicFile.MAX_NAME_BYTES + " fit (a folder entry "
+                   + "holds 255, and the temporary file written first adds " + (255 - AtomicFile.MAX_NAME_BYTES) + ")";
+        }
+        FileKind kind = FileKind.of(file);
+        if (kind == FileKind.DIRECTORY) {
+            return "it is a directory";
+        }
+        if (kind.writtenInPlace()) {
+            return Files.isWritable(file) ? null : "it is " + kind.words() + " that is not writable";
+        }
+        if (kind != FileKind.REGULAR && kind != FileKind.MISSING) {
+            return "it is " + kind.words() + ", not a regular file";
+        }
+        Path dir = file.toAbsolutePath().getParent();
         if (dir == null || !Files.isDirectory(dir)) {
-            return "directory " + dir + " does not exist";
+            return (file.equals(out.toAbsolutePath()) ? "" : "it is a symbolic link to " + file + ", and ")
+                   + "directory " + dir + " does not exist";
         }
         if (!Files.isWritable(dir)) {
             return "directory " + dir + " is not writable";
         }
-        if (Files.exists(out) && !Files.isWritable(out)) {
+        if (Files.exists(file) && !Files.isWritable(file)) {
             return "it is read-only";
         }
         return null;
+    }
+
+    /**
+     * Why {@code out} must not be written because the run reads it, or null: it is the scene, or
+     * one of the files the scene read ({@code inputs}: meshes, material libraries, images), or
+     * {@code otherInputs} (the reference). The same file under another name (a link) counts.
+     */
+    static String whyInput(Path out, Path scene, Collection<Path> inputs, Path... otherInputs) {
+        if (scene != null && same(out, scene)) {
+            return "it is the scene";
+        }
+        for (Path other : otherInputs) {
+            if (other != null && same(out, other)) {
+                return "it is the reference";
+            }
+        }
+        for (Path input : inputs) {
+            if (same(out, input)) {
+                return "it is one of the scene's inputs (" + input + ")";
+            }
+        }
+        return null;
+    }
+
+    /** True when both name one file: the same path, or existing files that are one (links, hard links). */
+    static boolean same(Path a, Path b) {
+        if (a.toAbsolutePath().normalize().equals(b.toAbsolutePath().normalize())) {
+            return true;
+        }
+        try {
+            return Files.exists(a) && Files.exists(b) && Files.isSameFile(a, b);
+        } catch (IOException e) {
+            return false;
+        }
     }
 }

@@ -10,14 +10,18 @@ import java.util.HexFormat;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.function.Consumer;
 import raytracer.image.AtomicFile;
+import raytracer.image.FileKind;
 import raytracer.image.Film;
+import raytracer.image.IoReason;
 import raytracer.image.ImageWriters;
 
 /**
  * Where the convergence benchmark keeps the references it renders itself, so the next run reuses
  * them: {@code <scene name>-<key>.pfm} (the linear image times the scene's exposure, as
- * {@code render -o x.pfm} writes it) and a {@code .txt} beside it saying what it is. The key is a
+ * {@code render -o x.pfm} writes it) and a {@code .txt} beside it saying what it is, with the
+ * SHA-256 of the image's bytes: a reference that does not match it is rendered again. The key is a
  * SHA-256 of the scene file's bytes and every setting of the reference render; files the scene
  * reads (meshes, maps) and the renderer's own code are not in it, so delete the file after changing
  * those.
@@ -60,41 +64,103 @@ final class ReferenceCache {
         return (dot > 0 ? name.substring(0, dot) : name).replaceAll("[^A-Za-z0-9._-]", "_");
     }
 
-    /** The cached reference, if there is one (a damaged file counts as none and is rendered again). */
-    Optional<Film> load(Path file) {
+    /**
+     * The cached reference, if there is one and it is as stored: its bytes must have the SHA-256
+     * its description holds and every pixel must be finite. Anything else counts as none, to be
+     * rendered again; {@code why} is told why when a file was there.
+     */
+    Optional<Film> load(Path file, Consumer<String> why) {
         if (!Files.isRegularFile(file)) {
             return Optional.empty();
         }
         try {
-            return Optional.of(ImageWriters.readPfm(file));
+            byte[] bytes = Files.readAllBytes(file);
+            String sum = value(file, SHA_KEY);
+            if (sum == null || !sum.equals(sha256(bytes))) {
+                why.accept("does not match its checksum");
+                return Optional.empty();
+            }
+            Film film = ImageWriters.readPfm(bytes, file);
+            for (int y = 0; y < film.height(); y++) {
+                for (int x = 0; x < film.width(); x++) {
+                    for (int c = 0; c < 3; c++) {
+                        if (!Float.isFinite(film.get(x, y, c))) {
+                            why.accept("holds a pixel that is not a finite number");
+                            return Optional.empty();
+                        }
+                    }
+                }
+            }
+            return Optional.of(film);
         } catch (IOException e) {
+            why.accept("cannot be read (" + IoReason.of(e) + ")");
             return Optional.empty();
         }
     }
 
+    /** The cached reference, if there is one as stored (as {@link #load(Path, Consumer)}, saying nothing). */
+    Optional<Film> load(Path file) {
+        return load(file, why -> { });
+    }
+
     /**
-     * Stores a reference (in .pfm units already) and its description, creating the folder if
-     * needed; the description goes first, so a reference is never found without it.
+     * Fails when something other than a folder is where the references are kept: found before a
+     * reference is rendered, not after.
+     */
+    void checkFolder() throws IOException {
+        FileKind kind = FileKind.of(dir);
+        if (kind != FileKind.DIRECTORY && kind != FileKind.MISSING) {
+            throw new IOException("cannot keep references in " + dir + ": it is " + kind.words() + ", not a folder");
+        }
+    }
+
+    /**
+     * Stores a reference (in .pfm units already) and its description with the SHA-256 of the
+     * image's bytes, creating the folder if needed; the description goes first, so a reference is
+     * never found without it.
      */
     void store(Path file, Film film, String description) throws IOException {
+        checkFolder();
         Files.createDirectories(dir);
-        AtomicFile.write(description(file), out -> out.write(description.getBytes(StandardCharsets.UTF_8)));
-        ImageWriters.write(film, 1, file);
+        byte[] image = ImageWriters.pfmBytes(film, 1);
+        String text = description + SHA_KEY + sha256(image) + "\n";
+        AtomicFile.replace(description(file), out -> out.write(text.getBytes(StandardCharsets.UTF_8)));
+        AtomicFile.replace(file, out -> out.write(image));
+    }
+
+    static final String SHA_KEY = "sha-256=";
+
+    private static String sha256(byte[] bytes) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is missing from this Java", e);
+        }
+    }
+
+    /** The value of the description's line starting {@code key}, or null. */
+    private static String value(Path file, String key) {
+        try {
+            for (String line : Files.readAllLines(description(file), StandardCharsets.UTF_8)) {
+                if (line.startsWith(key)) {
+                    return line.substring(key.length()).strip();
+                }
+            }
+        } catch (IOException e) {
+            return null;
+        }
+        return null;
     }
 
     /** The RMSE of the reference's own noise, from the {@value #NOISE_KEY} line of its description. */
     OptionalDouble noise(Path file) {
+        String value = value(file, NOISE_KEY);
         try {
-            for (String line : Files.readAllLines(description(file), StandardCharsets.UTF_8)) {
-                if (line.startsWith(NOISE_KEY)) {
-                    double v = Double.parseDouble(line.substring(NOISE_KEY.length()));
-                    return v >= 0 && Double.isFinite(v) ? OptionalDouble.of(v) : OptionalDouble.empty();
-                }
-            }
-        } catch (IOException | NumberFormatException e) {
+            double v = value == null ? Double.NaN : Double.parseDouble(value);
+            return v >= 0 && Double.isFinite(v) ? OptionalDouble.of(v) : OptionalDouble.empty();
+        } catch (NumberFormatException e) {
             return OptionalDouble.empty();
         }
-        return OptionalDouble.empty();
     }
 
     static final String NOISE_KEY = "noise-rmse=";

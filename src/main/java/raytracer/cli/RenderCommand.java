@@ -12,6 +12,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.accel.Aggregation;
 import raytracer.core.ViewPlane;
+import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 
 /**
@@ -90,6 +91,11 @@ public final class RenderCommand implements Callable<Integer> {
                           + "or ~/.cache/raytracer/meshes.")
     Path cacheDir;
 
+    @Option(names = "--cache-max", paramLabel = "SIZE",
+            description = "The most the mesh cache's entries may take together, e.g. 512M or 4G; past it the least recently "
+                          + "used are deleted. Default: $" + MeshCache.MAX_ENV + ", else 1G.")
+    String cacheMax;
+
     @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
     boolean noCache;
 
@@ -124,12 +130,17 @@ public final class RenderCommand implements Callable<Integer> {
      * input or failed render, 2 bad usage.
      */
     public static int run(PrintWriter err, String... args) {
-        return ErrorReport.install(new CommandLine(new RenderCommand()), err).execute(args);
+        return run(new PrintWriter(System.out, true), err, args);
+    }
+
+    /** As {@link #run(PrintWriter, String...)}, with standard output ({@code converge}'s table and {@code --csv -}) on {@code out}. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        return ErrorReport.install(new CommandLine(new RenderCommand()), out, err).execute(args);
     }
 
     @Override
     public Integer call() throws Exception {
         RenderRequest request = new OptionChecks(spec.commandLine()).check(this);
-        return ErrorReport.explainingLimits(() -> new RenderRun(request, spec.commandLine().getErr()).run());
+        return ErrorReport.explainingLimits(() -> new RenderRun(request, spec.commandLine()).run());
     }
 }

@@ -11,8 +11,9 @@ import raytracer.accel.Aggregation;
  * @param costView true for --view bvh-cost
  * @param analyse false for --no-skip: the scene analysis does not run, so nothing is left out
  * @param meshCache the mesh cache's folder, or null for none (--no-cache)
+ * @param meshCacheMax the bytes the mesh cache's entries may take together
  * @param show true for --show: a window shows the image as it renders (a display is known to be there)
  */
 record RenderRequest(Path scene, Path output, SceneOverrides overrides, Aggregation.Mode accel, boolean costView, boolean analyse,
-                     int threads, long seed, int repeat, boolean stats, boolean quiet, Path meshCache, boolean show) {
+                     int threads, long seed, int repeat, boolean stats, boolean quiet, Path meshCache, long meshCacheMax, boolean show) {
 }

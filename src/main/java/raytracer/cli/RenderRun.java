@@ -2,9 +2,10 @@ package raytracer.cli;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
+import picocli.CommandLine;
+import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
 import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
@@ -38,10 +39,12 @@ final class RenderRun {
     private final RunReport report;
     /** The terminal's progress bar while the last render runs, for a cancel from the window to clear. */
     private volatile Progress progress;
+    private final CommandLine commandLine;
 
-    RenderRun(RenderRequest request, PrintWriter err) {
+    RenderRun(RenderRequest request, CommandLine commandLine) {
         this.request = request;
-        this.report = new RunReport(err, request.repeat());
+        this.commandLine = commandLine;
+        this.report = new RunReport(commandLine.getErr(), request.repeat());
     }
 
     int run() throws Exception {
@@ -49,6 +52,11 @@ final class RenderRun {
             long loadStart = System.nanoTime();
             LoadedScene loaded = workers.call(this::loadScene);
             long loadNanos = System.nanoTime() - loadStart;
+            String input = OutputFile.whyInput(request.output(), request.scene(), loaded.report().inputs());
+            if (input != null) {
+                // found after loading, which names the inputs, and before rendering
+                throw new ParameterException(commandLine, "cannot write " + request.output() + ": " + input);
+            }
             int warned = loaded.report().warnings().size();
             if (!request.quiet()) {
                 report.warnings(loaded.report().warnings());
@@ -86,6 +94,7 @@ final class RenderRun {
             try (ShowWindow window = request.show() ? openWindow(renderer, film, exposure, srgb) : null) {
                 RenderStats stats = render(renderer, film, window);
                 Film written = write(film, vp, exposure, srgb);
+                report.droppedSamples(stats);
                 if (window != null) {
                     window.finish(written);
                 }
@@ -171,7 +180,7 @@ final class RenderRun {
 
     private LoadedScene loadScene() throws SceneException, IOException {
         if (request.scene() != null) {
-            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache()));
+            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache(), request.meshCacheMax()));
         }
         try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
             if (in == null) {

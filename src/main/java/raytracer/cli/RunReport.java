@@ -29,7 +29,7 @@ final class RunReport {
     }
 
     void warnings(List<String> warnings) {
-        warnings.forEach(w -> err.println("render: warning: " + w));
+        warnings.forEach(w -> err.println("render: warning: " + Terminal.line(w)));
     }
 
     void repeat(int i, RenderStats s) {
@@ -55,10 +55,29 @@ final class RunReport {
     }
 
     static String summaryLine(RenderStats s, Path out) {
-        return String.format("%s: %dx%d, %d spp, %d thread%s, %.2f s, %.2f M rays/s (%d primary, %d shadow, %d secondary)%s",
+        return String.format("%s: %dx%d, %d spp, %d thread%s, %.2f s, %.2f M rays/s (%d primary, %d shadow, %d secondary)",
             out, s.width(), s.height(), s.samplesPerPixel(), s.threads(), s.threads() == 1 ? "" : "s",
-            s.seconds(), s.raysPerSecond() / 1e6, s.primaryRays(), s.shadowRays(), s.secondaryRays(),
-            s.nonFiniteSamples() > 0 ? ", WARNING: " + s.nonFiniteSamples() + " non-finite samples dropped" : "");
+            s.seconds(), s.raysPerSecond() / 1e6, s.primaryRays(), s.shadowRays(), s.secondaryRays());
+    }
+
+    /**
+     * The samples the render dropped as not finite, a warning line printed even with --quiet: the
+     * image is then not what the scene describes (a defect to report), and must not pass unseen.
+     */
+    void droppedSamples(RenderStats s) {
+        String line = droppedLine(s);
+        if (line != null) {
+            err.println("render: warning: " + line);
+        }
+    }
+
+    /** The warning about dropped samples, or null when none were. */
+    static String droppedLine(RenderStats s) {
+        if (s.nonFiniteSamples() == 0) {
+            return null;
+        }
+        return s.nonFiniteSamples() + " non-finite sample" + (s.nonFiniteSamples() == 1 ? "" : "s")
+               + " (NaN or infinite radiance) dropped; the pixels they fell in average the others";
     }
 
     /** The --stats breakdown: load steps and mesh figures, preparation, rays by kind, box tests, peak heap. */

@@ -10,6 +10,13 @@ import raytracer.math.Rng;
  * sample's draws shift another's.
  */
 public interface Sampler {
+    /**
+     * The most samples a count may ask for: per pixel, per area light, per glossy reflection.
+     * 1024^2, a square, so a pattern on a k x k grid rounds it to itself and no rounding can pass
+     * the int range (2^31 - 1 rounded up to 46341^2 overflowed to -2147479015); a render's tables
+     * a pattern of that many points then takes 16 MiB in {@link SampleTables}.
+     */
+    int MAX_SAMPLES = 1 << 20;
 
     /** The number of samples this pattern really uses for a request of {@code requested}. */
     default int supportedCount(int requested) {

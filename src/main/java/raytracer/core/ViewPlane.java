@@ -18,8 +18,8 @@ public record ViewPlane(int hres, int vres, int numSamples, Sampler sampler, int
         if (hres < 1 || vres < 1) {
             throw new IllegalArgumentException("image size must be at least 1x1, got " + hres + "x" + vres);
         }
-        if (numSamples < 1) {
-            throw new IllegalArgumentException("samples per pixel must be at least 1, got " + numSamples);
+        if (numSamples < 1 || numSamples > Sampler.MAX_SAMPLES) {
+            throw new IllegalArgumentException("samples per pixel must be 1 to " + Sampler.MAX_SAMPLES + ", got " + numSamples);
         }
         if (maxDepth < 0 || maxDepth > MAX_DEPTH) {
             throw new IllegalArgumentException("max depth must be 0 to " + MAX_DEPTH + ", got " + maxDepth);

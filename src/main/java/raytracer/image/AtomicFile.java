@@ -10,14 +10,22 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
  * Writes a file through a temporary sibling and a rename, so readers see either the old file or the
- * complete new one, never a half-written one. The result has the permissions a plainly created file
- * would have (the umask's), or the replaced file's: {@code Files.createTempFile} would make it
- * owner-only. If the program is stopped mid-write, {@link PartialFiles} deletes the temporary file.
+ * complete new one, never a half-written one. If the program is stopped mid-write,
+ * {@link PartialFiles} deletes the temporary file.
+ *
+ * <p>Two kinds of file are written so. A file the user named ({@link #write}) is never destroyed:
+ * a symbolic link is written through to its target (one to nothing is refused), a FIFO or a
+ * character device ({@code /dev/null}, a terminal) is written into as it is, anything else that is
+ * not a regular file is refused, and the result has the permissions of the file it replaces, or
+ * the umask's ({@code Files.createTempFile} would make it owner-only). A file of this program's own,
+ * such as a cache entry ({@link #replace}), replaces whatever is at its name, link or not, and
+ * always has the umask's permissions.
  */
 public final class AtomicFile {
 
@@ -30,27 +38,88 @@ public final class AtomicFile {
     private AtomicFile() {
     }
 
+    /** Writes a file the user named, as the class comment says: never replacing a link, FIFO or device. */
     public static void write(Path target, Body body) throws IOException {
-        try {
-            writeThroughTemp(target, body);
-        } catch (FileSystemException e) {
-            // the bare exception names only the temporary file; say which file and why
-            String reason = e instanceof NoSuchFileException ? "no such file or directory"
-                            : e instanceof AccessDeniedException ? "permission denied"
-                            : e.getReason() != null ? e.getReason() : e.getClass().getSimpleName();
-            throw new IOException("cannot write " + target + ": " + reason, e);
-        } catch (IOException e) {
-            // the body's own failure, such as an encoder's message around the cause "File too large"
-            String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
-            Throwable cause = e.getCause();
-            if (cause != null && cause.getMessage() != null && !reason.contains(cause.getMessage())) {
-                reason += " (" + cause.getMessage() + ")";
+        Path file = destination(target);
+        FileKind kind = FileKind.of(file);
+        if (kind.writtenInPlace()) {
+            // no temporary file: a rename would put a regular file in the FIFO's or device's place
+            try (OutputStream out = Files.newOutputStream(file, StandardOpenOption.WRITE)) {
+                body.writeTo(out);
+            } catch (IOException e) {
+                throw failure(target, e);
             }
-            throw new IOException("cannot write " + target + ": " + reason, e);
+            return;
+        }
+        if (kind != FileKind.REGULAR && kind != FileKind.MISSING) {
+            throw new IOException("cannot write " + target + ": it is " + kind.words() + ", not a regular file");
+        }
+        atomically(file, body, true);
+    }
+
+    /**
+     * The file that writing {@code target} writes: itself, or the end of the chain of symbolic links
+     * it starts (which may not exist yet: writing creates it). More than {@value #MOST_LINKS} links
+     * in a row (a loop) is an IOException.
+     */
+    public static Path destination(Path target) throws IOException {
+        Path file = target.toAbsolutePath();
+        for (int hops = 0; FileKind.ofLink(file) == FileKind.SYMBOLIC_LINK; hops++) {
+            if (hops == MOST_LINKS) {
+                throw new IOException("cannot write " + target + ": too many levels of symbolic links (a loop?)");
+            }
+            file = file.getParent().resolve(Files.readSymbolicLink(file)).normalize();
+        }
+        return file;
+    }
+
+    /**
+     * The longest name (in UTF-8 bytes) that can be written so: the temporary file's name is the
+     * target's with a dot before it and at most 22 characters after it, and a folder entry holds
+     * 255 bytes (NAME_MAX of Linux's file systems).
+     */
+    public static final int MAX_NAME_BYTES = 255 - 1 - 1 - 13 - ".partial".length();
+
+    /** Linux's limit of links followed in one path (MAXSYMLINKS). */
+    static final int MOST_LINKS = 40;
+
+    /**
+     * Writes a file of this program's own (a cache entry): whatever is at {@code target}, a link or
+     * anything else, is replaced by a new regular file with the umask's permissions. Copying the
+     * replaced file's would keep a mode-000 entry unreadable for ever, or make one that replaced a
+     * link to a world-writable file world-writable.
+     */
+    public static void replace(Path target, Body body) throws IOException {
+        atomically(target, body, false);
+    }
+
+    private static void atomically(Path target, Body body, boolean keepPermissions) throws IOException {
+        try {
+            writeThroughTemp(target, body, keepPermissions);
+        } catch (IOException e) {
+            throw failure(target, e);
         }
     }
 
-    private static void writeThroughTemp(Path target, Body body) throws IOException {
+    /** A write's failure as one line that names the file the user gave. */
+    private static IOException failure(Path target, IOException e) {
+        if (e instanceof FileSystemException fs) {
+            // the bare exception names only the temporary file; say which file and why
+            String reason = e instanceof NoSuchFileException ? "no such file or directory"
+                            : e instanceof AccessDeniedException ? "permission denied"
+                            : fs.getReason() != null ? fs.getReason() : e.getClass().getSimpleName();
+            return new IOException("cannot write " + target + ": " + reason, e);
+        }
+        // the body's own failure, such as an encoder's message around the cause "File too large"
+        String reason = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+        Throwable cause = e.getCause();
+        if (cause != null && cause.getMessage() != null && !reason.contains(cause.getMessage())) {
+            reason += " (" + cause.getMessage() + ")";
+        }
+        return new IOException("cannot write " + target + ": " + reason, e);
+    }
+
+    private static void writeThroughTemp(Path target, Body body, boolean keepPermissions) throws IOException {
         Path absolute = target.toAbsolutePath();
         Path dir = absolute.getParent();
         Path temp = null;
@@ -68,7 +137,9 @@ public final class AtomicFile {
             try (OutputStream out = stream) {
                 body.writeTo(out);
             }
-            keepPermissionsOf(absolute, temp);
+            if (keepPermissions) {
+                keepPermissionsOf(absolute, temp);
+            }
             try {
                 Files.move(temp, absolute, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {

@@ -4,7 +4,9 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Iterator;
+import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
@@ -31,8 +33,9 @@ public final class ImageFiles {
      * data such as normal maps that are not colours.
      */
     public static Film read(Path file, boolean srgb) throws IOException {
-        if (Files.isDirectory(file)) {
-            throw new IOException("image " + file + " is a directory, not an image file");
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            throw new IOException("image " + file + " is " + notRegular);
         }
         if (!Files.isRegularFile(file)) {
             throw new IOException("image " + file + " not found");
@@ -77,14 +80,23 @@ public final class ImageFiles {
                     throw new IOException("cannot read image " + file + ": " + reason(e), e);
                 }
                 requireHeap(file, width, height, BYTES_PER_PIXEL);
+                // a decoder that meets damaged or missing data warns and fills the rest (JPEG: grey);
+                // the first warning refuses the image instead, as a damaged PNG is refused
+                List<String> warnings = new ArrayList<>();
+                reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
+                BufferedImage image;
                 try {
-                    return reader.read(0);
+                    image = reader.read(0);
                 } catch (IOException e) {
                     throw new IOException("cannot read image " + file + ": " + reason(e), e);
                 } catch (OutOfMemoryError e) {
                     throw new IOException("image " + file + " (" + width + " x " + height + " pixels) does not fit in "
                                           + "the heap left; " + MORE_HEAP, e);
                 }
+                if (!warnings.isEmpty()) {
+                    throw new IOException("cannot read image " + file + ": it is damaged or cut short (" + warnings.get(0) + ")");
+                }
+                return image;
             } finally {
                 reader.dispose();
             }

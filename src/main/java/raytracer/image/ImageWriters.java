@@ -52,6 +52,25 @@ public final class ImageWriters {
     }
 
     /**
+     * Stores a PFM of this program's own (a cached reference): written atomically, replacing whatever
+     * is at {@code path} ({@link AtomicFile#replace}).
+     */
+    public static void storePfm(Film film, double exposure, Path path) throws IOException {
+        AtomicFile.replace(path, out -> writePfm(film, exposure, out));
+    }
+
+    /** The bytes of the PFM {@link #writePfm} writes. */
+    public static byte[] pfmBytes(Film film, double exposure) {
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        try {
+            writePfm(film, exposure, bytes);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e); // a byte array does not fail
+        }
+        return bytes.toByteArray();
+    }
+
+    /**
      * Portable float map: header "PF", size, -1 for little endian; rows from the bottom. Every value
      * is finite (see {@link #finite}), so a reader never meets Inf or NaN.
      */
@@ -89,7 +108,11 @@ public final class ImageWriters {
      * is not one, or is cut short, is an IOException naming the file and what is wrong.
      */
     public static Film readPfm(Path path) throws IOException {
-        byte[] bytes = java.nio.file.Files.readAllBytes(path);
+        return readPfm(java.nio.file.Files.readAllBytes(path), path);
+    }
+
+    /** As {@link #readPfm(Path)}, from the file's bytes already read; {@code path} names it in messages. */
+    public static Film readPfm(byte[] bytes, Path path) throws IOException {
         int[] pos = {0};
         String magic = token(bytes, pos);
         if (magic.equals("Pf")) {
@@ -111,8 +134,12 @@ public final class ImageWriters {
         if (width < 1 || height < 1 || (long) width * height > Film.MAX_PIXELS || scale == 0 || Double.isNaN(scale)) {
             throw new IOException(path + ": bad PFM header: " + width + "x" + height + " pixels, scale " + scale);
         }
-        pos[0]++; // the single whitespace byte after the header
         long expected = 12L * width * height;
+        // the single whitespace byte after the header; a header written with CRLF line ends has
+        // two, which the length tells apart from a first data byte that happens to be a LF
+        boolean crlf = pos[0] + 1 < bytes.length && bytes[pos[0]] == '\r' && bytes[pos[0] + 1] == '\n'
+                       && bytes.length - pos[0] - 2 == expected;
+        pos[0] += crlf ? 2 : 1;
         if (bytes.length - pos[0] < expected) {
             throw new IOException(path + ": truncated PFM: " + Math.max(0, bytes.length - pos[0]) + " bytes of pixels, "
                                   + expected + " expected for " + width + "x" + height);

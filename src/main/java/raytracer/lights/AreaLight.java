@@ -1,6 +1,7 @@
 package raytracer.lights;
 
 import raytracer.core.Light;
+import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.math.HalfSpace;
 import raytracer.math.RGBColor;
@@ -22,8 +23,8 @@ public final class AreaLight extends Light {
     private final double inverseArea;
 
     AreaLight(Emitter emitter, double ls, RGBColor color, int samples) {
-        if (samples < 1) {
-            throw new IllegalArgumentException("an area light needs at least 1 sample, got " + samples);
+        if (samples < 1 || samples > Sampler.MAX_SAMPLES) {
+            throw new IllegalArgumentException("an area light takes 1 to " + Sampler.MAX_SAMPLES + " samples, got " + samples);
         }
         this.emitter = emitter;
         this.radiance = color.scale(ls);

@@ -8,6 +8,7 @@ import raytracer.core.Background;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelSamples;
+import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
 import raytracer.core.Texture;
@@ -41,8 +42,8 @@ public final class GlossyReflector extends Material {
 
     public GlossyReflector(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, int samples,
                            boolean normalized) {
-        if (samples < 1) {
-            throw new IllegalArgumentException("glossy samples must be at least 1, got " + samples);
+        if (samples < 1 || samples > Sampler.MAX_SAMPLES) {
+            throw new IllegalArgumentException("glossy samples must be 1 to " + Sampler.MAX_SAMPLES + ", got " + samples);
         }
         this.ka = ka;
         this.kd = kd;

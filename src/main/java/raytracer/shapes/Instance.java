@@ -46,6 +46,11 @@ public final class Instance extends GeometricObject implements LocalFrame {
         this.inverseTranslation = Math.max(Math.abs(inverse.get(0, 3)), Math.max(Math.abs(inverse.get(1, 3)), Math.abs(inverse.get(2, 3))));
     }
 
+    /** The object this instance moves, in its own space. */
+    public GeometricObject object() {
+        return object;
+    }
+
     /** The same instance of the object prepared, when preparing made a new one (a mesh's BVH). */
     @Override
     public GeometricObject prepared() {

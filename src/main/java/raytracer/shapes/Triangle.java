@@ -10,6 +10,13 @@ import raytracer.math.Vector3D;
 
 /** A single flat triangle (Suffern, section 19.3), hit by the watertight test of {@link Watertight}. */
 public final class Triangle extends GeometricObject {
+    /**
+     * The largest magnitude a vertex coordinate may have, as {@link Sphere}'s extent is bounded: the
+     * normal is the cross product of two edges (each component up to 8 c^2 for coordinates up to c),
+     * whose squared length must stay below the largest double, 1.8e308, or it normalises to 0 and
+     * the triangle renders unlit (from c = 1e77; the watertight test's products overflow from 1e154).
+     */
+    public static final double MAX_COORDINATE = 1e75;
     private final double[] v = new double[9];
     private final Vector3D normal;
     private final boolean degenerate;
@@ -17,6 +24,14 @@ public final class Triangle extends GeometricObject {
     public Triangle(Point3D a, Point3D b, Point3D c) {
         if (!a.isFinite() || !b.isFinite() || !c.isFinite()) {
             throw new IllegalArgumentException("triangle vertices must be finite");
+        }
+        double largest = 0;
+        for (Point3D p : new Point3D[] {a, b, c}) {
+            largest = Math.max(largest, Math.max(Math.abs(p.x()), Math.max(Math.abs(p.y()), Math.abs(p.z()))));
+        }
+        if (largest > MAX_COORDINATE) {
+            throw new IllegalArgumentException("triangle vertex coordinates must be at most " + MAX_COORDINATE + " in size (the "
+                                               + "cross product of two edges must square to a double), got " + largest);
         }
         Point3D[] p = {a, b, c};
         for (int i = 0; i < 3; i++) {

@@ -141,6 +141,52 @@ class ConvergeCommandTest {
         }
     }
 
+    /**
+     * Issue 25, item 10: a cached reference is used only when it matches the checksum its
+     * description holds. Before, a NaN pixel in it gave an RMSE of NaN and exit 0, and a changed
+     * value was reused silently; and --cache naming a file failed only after the reference was rendered.
+     */
+    @Test
+    void aChangedCachedReferenceIsRenderedAgain() throws IOException {
+        Path scene = write("spheres.yaml", SPHERES);
+        Path cache = dir.resolve("cache");
+        Path csv = dir.resolve("a.csv");
+        String[] args = {scene.toString(), "--spp", "1", "--reference-spp", "16", "--cache", cache.toString(), "--csv",
+                         csv.toString(), "--plot", dir.resolve("a.png").toString()};
+        assertEquals(0, converge(args).code());
+        String rmse = rows(csv).get(0)[4];
+        Path pfm;
+        try (Stream<Path> files = Files.list(cache)) {
+            pfm = files.filter(p -> p.toString().endsWith(".pfm")).findFirst().orElseThrow();
+        }
+        byte[] good = Files.readAllBytes(pfm);
+        for (float bad : new float[] {Float.NaN, 0.123f}) {
+            byte[] changed = good.clone();
+            // the last pixel's blue channel, little-endian
+            int bits = Float.floatToRawIntBits(bad);
+            for (int k = 0; k < 4; k++) {
+                changed[changed.length - 4 + k] = (byte) (bits >>> 8 * k);
+            }
+            Files.write(pfm, changed);
+            Result r = converge(args);
+            assertEquals(0, r.code(), r.err());
+            assertTrue(r.err().contains("does not match its checksum; rendering it again"), r.err());
+            assertTrue(r.err().contains("rendering the reference"), r.err());
+            assertEquals(rmse, rows(csv).get(0)[4], "the same reference as first rendered");
+        }
+    }
+
+    @Test
+    void aCacheThatIsAFileFailsBeforeRendering() throws IOException {
+        Path scene = write("spheres.yaml", SPHERES);
+        Path file = write("cache", "not a folder");
+        Result r = converge(scene.toString(), "--spp", "1", "--reference-spp", "16", "--cache", file.toString(), "--plot",
+                            dir.resolve("a.png").toString());
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().contains("--cache " + file + " is a regular file, not a folder"), r.err());
+        assertFalse(r.err().contains("rendering the reference"), r.err());
+    }
+
     @Test
     void aGivenReferenceFileIsUsedAndABadOneIsOneLine() throws IOException {
         Path scene = write("spheres.yaml", SPHERES);
@@ -188,7 +234,7 @@ class ConvergeCommandTest {
     @Test
     void badOptionsAreUsageErrors() throws IOException {
         Path scene = write("spheres.yaml", SPHERES);
-        assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be at least 1, got 0");
+        assertOneLine(converge(scene.toString(), "--spp", "4,0"), 2, "--spp values must be 1 to 1048576, got 0");
         assertOneLine(converge(scene.toString(), "--time", "-1"), 2, "--time values must be positive seconds");
         assertOneLine(converge(scene.toString(), "--config", "sampler=poisson-disk"), 2, "unknown sampler 'poisson-disk'; allowed: regular");
         assertOneLine(converge(scene.toString(), "--reference", "ref.png"), 2, "--reference must be auto, closed-form, self or a .pfm");
@@ -198,7 +244,8 @@ class ConvergeCommandTest {
         assertOneLine(converge(Path.of("scenes", "closed-form-rectangle.yaml").toString(), "--filter", "gaussian", "--reference",
                                "closed-form", "-W", "8", "-H", "8", "--plot", dir.resolve("g.png").toString()),
                       1, "the exact image is of box-filtered pixels, and this run's filter is gaussian");
-        assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 1, "give a name ending in .png");
+        // an output that cannot be written is a bad option value, as for render -o
+        assertOneLine(converge(scene.toString(), "--plot", dir.resolve("p.jpg").toString()), 2, "give a name ending in .png");
         assertOneLine(converge(dir.resolve("missing.yaml").toString()), 1, "no such file");
         assertOneLine(converge(), 2, "Missing required parameter: 'SCENE'");
     }

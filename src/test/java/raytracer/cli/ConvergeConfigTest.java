@@ -38,7 +38,7 @@ class ConvergeConfigTest {
         String[][] cases = {
             {"sampler=poisson-disk", "unknown sampler 'poisson-disk'; allowed: regular, random"},
             {"lights=4", "expected key=value pairs joined by commas, with keys cutoff, label, light-samples, sampler; got 'lights=4'"},
-            {"light-samples=0", "light-samples must be at least 1, got 0"},
+            {"light-samples=0", "light-samples must be 1 to 1048576, got 0"},
             {"light-samples=many", "light-samples must be a whole number, got 'many'"},
             {"cutoff=1", "cutoff must be in [0, 1), got 1"},
             {"sampler=random,sampler=jittered", "'sampler' given twice"},

@@ -1,13 +1,17 @@
 package raytracer.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.OptionalInt;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import raytracer.core.World;
 import raytracer.image.ErrorMetrics;
 import raytracer.io.scene.LoadedScene;
@@ -31,5 +35,13 @@ class ConvergeReferenceTest {
         // 576 pixels: the two estimates of one variance agree to about 10%
         assertEquals(trueRmse, ref.noiseRmse(), 0.2 * trueRmse, "estimated " + ref.noiseRmse() + ", true " + trueRmse);
         assertEquals(0, exact.noiseRmse(), 0);
+    }
+
+    @Test
+    void aReferenceThatIsAFifoIsNotARegularFile(@TempDir Path dir) throws Exception {
+        Path fifo = dir.resolve("ref.pfm");
+        assertEquals(0, new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor());
+        IOException e = assertThrows(IOException.class, () -> ConvergeReference.fromFile(fifo, 4, 4));
+        assertTrue(e.getMessage().contains("not a regular file (it is a FIFO"), e.getMessage());
     }
 }

@@ -60,6 +60,27 @@ class ImageFilesTest {
         assertEquals("cannot read image " + file + ": I/O error reading PNG header!", error(file));
     }
 
+    /**
+     * Issue 25, item 11: a JPEG cut short was accepted, its missing part filled with grey (a PNG cut
+     * short is refused); the decoder's warning now refuses it too. Made here from a small JPEG.
+     */
+    @Test
+    void aTruncatedJpegIsRefused() throws IOException {
+        java.awt.image.BufferedImage image = new java.awt.image.BufferedImage(256, 256, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < 256; y++) {
+            for (int x = 0; x < 256; x++) {
+                image.setRGB(x, y, x << 16 | y << 8 | (x * 7 ^ y * 13) & 0xff);
+            }
+        }
+        ByteArrayOutputStream jpeg = new ByteArrayOutputStream();
+        javax.imageio.ImageIO.write(image, "jpg", jpeg);
+        Path whole = Files.write(dir.resolve("whole.jpg"), jpeg.toByteArray());
+        assertEquals(256, ImageFiles.read(whole).width(), "the whole file reads");
+        Path cut = Files.write(dir.resolve("cut.jpg"), java.util.Arrays.copyOf(jpeg.toByteArray(), jpeg.size() / 2));
+        String error = error(cut);
+        assertTrue(error.startsWith("cannot read image " + cut + ": it is damaged or cut short ("), error);
+    }
+
     @Test
     void aFileOfNoImageFormatNamesItsFile() throws IOException {
         Path file = Files.writeString(dir.resolve("text.png"), "not an image at all");
@@ -70,7 +91,7 @@ class ImageFilesTest {
     void aDirectoryIsCalledADirectory() throws IOException {
         // it was "not found"
         Path folder = Files.createDirectory(dir.resolve("folder.png"));
-        assertEquals("image " + folder + " is a directory, not an image file", error(folder));
+        assertEquals("image " + folder + " is not a regular file (it is a directory)", error(folder));
         assertEquals("image " + dir.resolve("none.png") + " not found", error(dir.resolve("none.png")));
     }
 

@@ -35,7 +35,7 @@ final class MaterialUse {
      * {@code mtllib} names one or more libraries, separated by spaces; a whole argument that names
      * a file is one name with spaces (as some exporters write it).
      */
-    void loadLibraries(String argument, int line) {
+    void loadLibraries(String argument, int line) throws ObjException {
         String whole = Arguments.path(Arguments.withoutComment(argument));
         try {
             if (!whole.isEmpty() && Files.isRegularFile(folder.resolve(whole))) {
@@ -52,17 +52,23 @@ final class MaterialUse {
         }
     }
 
-    private void load(String lib, int line) {
+    /** Loads one library: one that cannot be read is a warning, a value out of range in it an error. */
+    private void load(String lib, int line) throws ObjException {
+        Path file;
+        Decoding.Text text;
         try {
-            Path file = folder.resolve(lib).normalize();
-            library.putAll(MtlLoader.load(file, warnings));
-            libraries.add(file);
+            file = folder.resolve(lib).normalize();
+            text = MtlLoader.read(file);
         } catch (ObjException e) {
             warnings.add(objName + ":" + line + ": " + e.getMessage() + "; its materials fall back to grey");
+            return;
         } catch (InvalidPathException e) {
             warnings.add(objName + ":" + line + ": material library '" + FileWarnings.shown(lib, 60)
                          + "' is not a valid path; its materials fall back to grey");
+            return;
         }
+        library.putAll(MtlLoader.parse(file, text, warnings));
+        libraries.add(file);
     }
 
     /** {@code usemtl name} after {@code triangles} triangles. */

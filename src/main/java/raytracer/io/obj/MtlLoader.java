@@ -7,10 +7,12 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import raytracer.image.FileKind;
 
 /**
  * Reads an MTL library: {@code newmtl} blocks with Kd, Ks, Ka, Ke, Ns, d / Tr, Ni, illum, map_Kd and
@@ -35,7 +37,14 @@ final class MtlLoader {
     }
 
     static Map<String, ObjMaterial> load(Path file, List<String> warnings) throws ObjException {
-        Decoding.Text decoded = read(file);
+        return parse(file, read(file), warnings);
+    }
+
+    /**
+     * The materials of a library's text: what cannot be read is a warning, a value out of range
+     * (a negative or infinite colour, d past 1, ...) an ObjException naming the file and line.
+     */
+    static Map<String, ObjMaterial> parse(Path file, Decoding.Text decoded, List<String> warnings) throws ObjException {
         FileWarnings warn = new FileWarnings(file.toString(), warnings);
         if (decoded.latin1From() >= 0) {
             warn.add(decoded.latin1Line() + 1, "a byte that is not UTF-8; the file is read as ISO-8859-1 (Latin-1)");
@@ -72,10 +81,14 @@ final class MtlLoader {
     }
 
     /** The library's text without a byte-order mark, decoded as {@link Decoding} says. */
-    private static Decoding.Text read(Path file) throws ObjException {
+    static Decoding.Text read(Path file) throws ObjException {
         try {
-            if (Files.exists(file) && (!Files.isRegularFile(file) || Files.size(file) > MAX_BYTES)) {
-                throw new ObjException("material library " + file + " is not a file of at most " + (MAX_BYTES >> 20) + " MiB");
+            String notRegular = FileKind.notRegular(file);
+            if (notRegular != null) {
+                throw new ObjException("material library " + file + " is " + notRegular);
+            }
+            if (Files.exists(file) && Files.size(file) > MAX_BYTES) {
+                throw new ObjException("material library " + file + " is larger than " + (MAX_BYTES >> 20) + " MiB");
             }
             byte[] bytes = Files.readAllBytes(file);
             return Decoding.decode(bytes, Decoding.byteOrderMark(bytes, bytes.length), bytes.length);
@@ -86,21 +99,22 @@ final class MtlLoader {
         }
     }
 
-    private static void read(Builder m, String key, String value, Path file, int at, FileWarnings warn) {
+    private static void read(Builder m, String key, String value, Path file, int at, FileWarnings warn) throws ObjException {
+        Range range = new Range(file, at, key, value);
         switch (key) {
-            case "Kd" -> m.kd = color(value, at, warn, m.kd);
-            case "Ks" -> m.ks = color(value, at, warn, m.ks);
-            case "Ka" -> m.ka = color(value, at, warn, m.ka);
-            case "Ke" -> m.ke = color(value, at, warn, m.ke);
-            case "Ns" -> m.ns = scalar(value, at, warn, m.ns);
+            case "Kd" -> m.kd = range.color(color(value, at, warn, m.kd));
+            case "Ks" -> m.ks = range.color(color(value, at, warn, m.ks));
+            case "Ka" -> m.ka = range.color(color(value, at, warn, m.ka));
+            case "Ke" -> m.ke = range.emission(range.color(color(value, at, warn, m.ke)));
+            case "Ns" -> m.ns = range.atLeastZero(scalar(value, at, warn, m.ns));
             case "d" -> {
-                m.dissolve = scalar(value, at, warn, m.dissolve);
+                m.dissolve = range.fraction(scalar(value, at, warn, m.dissolve));
                 m.dissolveGiven = true;
             }
             // d wins over Tr whatever their order: some exporters write Tr inverted
-            case "Tr" -> m.dissolve = m.dissolveGiven ? m.dissolve : 1 - scalar(value, at, warn, 1 - m.dissolve);
-            case "Ni" -> m.ior = scalar(value, at, warn, m.ior);
-            case "illum" -> m.illum = (int) scalar(value, at, warn, m.illum);
+            case "Tr" -> m.dissolve = m.dissolveGiven ? m.dissolve : 1 - range.fraction(scalar(value, at, warn, 1 - m.dissolve));
+            case "Ni" -> m.ior = range.positive(scalar(value, at, warn, m.ior));
+            case "illum" -> m.illum = range.illum(scalar(value, at, warn, m.illum));
             case "map_Kd" -> m.mapKd = texture(file, TextureMap.parse(value), at, warn);
             case "map_Bump", "map_bump", "bump", "norm" -> {
                 TextureMap map = TextureMap.parse(value);
@@ -110,6 +124,82 @@ final class MtlLoader {
             default -> {
                 // a key of the specification these materials do not use
             }
+        }
+    }
+
+    /**
+     * The ranges of MTL values, as a scene's own materials have them: colours finite and not
+     * negative, an emission no brighter than an image holds, d and Tr fractions, Ni positive, illum
+     * one of the specification's models 0 to 10. A value out of range is an error at its line.
+     */
+    private record Range(Path file, int line, String key, String value) {
+        /** The most a channel may emit: the image holds floats (as a scene's lights, YamlObject.MAX_EMISSION). */
+        static final double MAX_EMISSION = Float.MAX_VALUE;
+
+        private ObjException error(String expected, String got) {
+            return new ObjException(file + ":" + line + ": " + key + " must be " + expected + ", got " + got);
+        }
+
+        double[] color(double[] rgb) throws ObjException {
+            for (double c : rgb) {
+                if (!(c >= 0) || !Double.isFinite(c)) {
+                    throw error("3 finite numbers of at least 0", token(c));
+                }
+            }
+            return rgb;
+        }
+
+        double[] emission(double[] rgb) throws ObjException {
+            for (double c : rgb) {
+                if (c > MAX_EMISSION) {
+                    throw error(String.format(Locale.ROOT, "at most %.6g (the largest value an image holds)", MAX_EMISSION),
+                                token(c));
+                }
+            }
+            return rgb;
+        }
+
+        double atLeastZero(double v) throws ObjException {
+            if (!(v >= 0) || !Double.isFinite(v)) {
+                throw error("a finite number of at least 0", token(v));
+            }
+            return v;
+        }
+
+        double positive(double v) throws ObjException {
+            if (!(v > 0) || !Double.isFinite(v)) {
+                throw error("a finite number greater than 0", token(v));
+            }
+            return v;
+        }
+
+        double fraction(double v) throws ObjException {
+            if (!(v >= 0 && v <= 1)) {
+                throw error("a number from 0 to 1", token(v));
+            }
+            return v;
+        }
+
+        int illum(double v) throws ObjException {
+            if (!(v >= 0 && v <= 10) || v != Math.rint(v)) {
+                throw error("a whole number from 0 to 10", token(v));
+            }
+            return (int) v;
+        }
+
+        /** The value as written in the file: the first of its numbers that parses to {@code v}. */
+        private String token(double v) {
+            for (String word : value.split("\\s+")) {
+                try {
+                    double parsed = Double.parseDouble(word);
+                    if (Double.compare(parsed, v) == 0 || parsed == v) {
+                        return word;
+                    }
+                } catch (NumberFormatException e) {
+                    // not this word
+                }
+            }
+            return Double.toString(v);
         }
     }
 

@@ -13,6 +13,8 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
+import raytracer.image.FileKind;
+import raytracer.shapes.Triangle;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -84,6 +86,10 @@ public final class ObjLoader {
     }
 
     private ObjModel read(boolean smoothNormals) throws ObjException {
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            throw new ObjException("cannot read mesh " + name + ": " + notRegular);
+        }
         try (InputStream raw = Files.newInputStream(file);
              InputStream in = name.endsWith(".gz") ? new GZIPInputStream(raw, 1 << 16) : raw) {
             ChunkPipeline.run(new LineChunks(in), this::merge);
@@ -167,7 +173,7 @@ public final class ObjLoader {
         line = text;
         if (vertexPlain.reset(text).matches()) {
             for (int g = 1; g <= 3; g++) {
-                positions.add(finite(vertexPlain, g));
+                positions.add(coordinate(vertexPlain, g));
             }
             return;
         }
@@ -184,18 +190,18 @@ public final class ObjLoader {
             case "v" -> {
                 require(vertex.reset(text).matches(), "'v x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
-                    positions.add(finite(vertex, g));
+                    positions.add(coordinate(vertex, g));
                 }
             }
             case "vt" -> {
                 require(texcoord.reset(text).matches(), "'vt u [v [w]]' with numbers");
-                texcoords.add((float) finite(texcoord, 1));
-                texcoords.add(texcoord.start(2) >= 0 ? (float) finite(texcoord, 2) : 0f);
+                texcoords.add(floatValue(texcoord, 1, "texture coordinate"));
+                texcoords.add(texcoord.start(2) >= 0 ? floatValue(texcoord, 2, "texture coordinate") : 0f);
             }
             case "vn" -> {
                 require(normal.reset(text).matches(), "'vn x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
-                    normals.add((float) finite(normal, g));
+                    normals.add(floatValue(normal, g, "normal component"));
                 }
             }
             case "f" -> materials.addTriangles(faces.read(text, keyword.end(), lineNumber, positions.size / 3,
@@ -225,6 +231,26 @@ public final class ObjLoader {
             throw error("coordinate '" + m.group(group) + "' is not a finite number");
         }
         return v;
+    }
+
+    /** A vertex coordinate: finite, and within what a triangle holds ({@link Triangle#MAX_COORDINATE}). */
+    private double coordinate(Matcher m, int group) throws ObjException {
+        double v = finite(m, group);
+        if (Math.abs(v) > Triangle.MAX_COORDINATE) {
+            throw error("coordinate '" + m.group(group) + "' is larger than " + Triangle.MAX_COORDINATE + ", the most a "
+                        + "triangle's vertex may have (its edges' cross product must square to a double)");
+        }
+        return v;
+    }
+
+    /** A value kept as a float (normals, texture coordinates): past the float range it would be infinite, a normal NaN. */
+    private float floatValue(Matcher m, int group, String what) throws ObjException {
+        double v = finite(m, group);
+        if (Math.abs(v) > Float.MAX_VALUE) {
+            throw error(what + " '" + m.group(group) + "' is beyond the largest float ("
+                        + String.format(java.util.Locale.ROOT, "%.6g", Float.MAX_VALUE) + ")");
+        }
+        return (float) v;
     }
 
     private void require(boolean matched, String expected) throws ObjException {

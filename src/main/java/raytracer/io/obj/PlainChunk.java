@@ -1,6 +1,7 @@
 package raytracer.io.obj;
 
 import java.util.regex.Matcher;
+import raytracer.shapes.Triangle;
 
 /**
  * The parse of a chunk that holds nothing but the commonest lines, "v x y z" and "f a b c" with
@@ -120,8 +121,8 @@ final class PlainChunk {
         private boolean vertex() {
             for (int g = 1; g <= 3; g++) {
                 double v = Numbers.parseDouble(text, vertex.start(g), vertex.end(g));
-                if (!Double.isFinite(v)) {
-                    return false;
+                if (!Double.isFinite(v) || Math.abs(v) > Triangle.MAX_COORDINATE) {
+                    return false; // the general parser says which line and why
                 }
                 positions.add(v);
             }

@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
+import raytracer.shapes.Triangle;
 import raytracer.shapes.mesh.Mesh;
 import raytracer.shapes.mesh.SmoothNormals;
 
@@ -170,6 +171,10 @@ public final class PlyLoader {
                 if (!Double.isFinite(values[k])) {
                     throw new PlyException(at(e, i) + "its " + (k < 3 ? "position" : k < 6 ? "normal" : "texture coordinate")
                                            + " is not finite (" + values[k] + ")");
+                }
+                if (k < 3 && !(Math.abs(values[k]) <= Triangle.MAX_COORDINATE)) {
+                    throw new PlyException(at(e, i) + "its position coordinate " + values[k] + " is beyond "
+                                           + Triangle.MAX_COORDINATE + " in size, more than a triangle holds");
                 }
             }
             p[3 * i] = values[0];

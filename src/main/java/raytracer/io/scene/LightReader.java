@@ -5,6 +5,7 @@ import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.core.GeometricObject;
 import raytracer.core.Light;
+import raytracer.core.Sampler;
 import raytracer.core.World;
 import raytracer.lights.AreaLight;
 import raytracer.lights.Directional;
@@ -83,7 +84,7 @@ final class LightReader {
         double ls = l.number("radiance", AREA_RADIANCE, 0, false);
         RGBColor color = l.color("color", RGBColor.WHITE);
         l.checkEmission("radiance", ls, "color", color);
-        int samples = l.integer("samples", AREA_SAMPLES, 1);
+        int samples = l.integer("samples", AREA_SAMPLES, 1, Sampler.MAX_SAMPLES);
         if (areaLightSamples.isPresent()) {
             samples = areaLightSamples.getAsInt();
         }

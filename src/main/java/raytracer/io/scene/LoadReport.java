@@ -1,16 +1,19 @@
 package raytracer.io.scene;
 
 import java.util.ArrayList;
+import java.nio.file.Path;
 import java.util.Collections;
+import java.util.LinkedHashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * What loading a scene found besides the scene itself: how long its steps took (parsing a mesh;
  * when the scene is prepared, building its BVH or reading it from the mesh cache), figures of what
  * was built (a mesh's triangles and vertices) and warnings (something odd but harmless, such as a
- * missing texture, or a stale cache). Filled by the readers while loading and by the loaded
+ * missing texture, or a stale cache), and the files it reads. Filled by the readers while loading and by the loaded
  * meshes while the scene is prepared, read by the command line after each.
  */
 public final class LoadReport {
@@ -18,6 +21,7 @@ public final class LoadReport {
     private final Map<String, Long> prepareTimings = new LinkedHashMap<>();
     private final List<String> statistics = new ArrayList<>();
     private final List<String> warnings = new ArrayList<>();
+    private final Set<Path> inputs = new LinkedHashSet<>();
 
     /** Notes how long a step took; a step recorded twice adds up. */
     void recordTiming(String step, long nanos) {
@@ -37,6 +41,11 @@ public final class LoadReport {
         warnings.add(warning);
     }
 
+    /** Notes a file the scene reads (the scene file, a mesh, a material library, an image). */
+    void addInput(Path file) {
+        inputs.add(file.toAbsolutePath().normalize());
+    }
+
     /** Steps and their durations in nanoseconds, in the order they were first recorded. */
     public Map<String, Long> timings() {
         return Collections.unmodifiableMap(timings);
@@ -54,5 +63,13 @@ public final class LoadReport {
 
     public List<String> warnings() {
         return List.copyOf(warnings);
+    }
+
+    /**
+     * Every file the scene read or will read when prepared, absolute: what an output must not be
+     * (the command line refuses to write over one of them).
+     */
+    public List<Path> inputs() {
+        return List.copyOf(inputs);
     }
 }

@@ -8,6 +8,7 @@ import raytracer.brdf.Ward;
 import raytracer.core.BRDF;
 import raytracer.core.Background;
 import raytracer.core.Material;
+import raytracer.core.Sampler;
 import raytracer.core.Texture;
 import raytracer.materials.Dielectric;
 import raytracer.materials.Fitted;
@@ -137,7 +138,7 @@ final class MaterialReader {
             return new Phong(ka, kd, cd, ks, cs, exp, m.bool("normalized", false));
         }
         if (kind.equals("glossy")) {
-            return new GlossyReflector(ka, kd, cd, ks, cs, exp, m.integer("samples", GLOSSY_SAMPLES, 1), m.bool("normalized", false));
+            return new GlossyReflector(ka, kd, cd, ks, cs, exp, m.integer("samples", GLOSSY_SAMPLES, 1, Sampler.MAX_SAMPLES), m.bool("normalized", false));
         }
         String fresnel = m.string("fresnel", "none");
         if (!fresnel.equals("none") && !fresnel.equals("schlick")) {

@@ -1,45 +1,95 @@
 package raytracer.io.scene;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileTime;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
+import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.Consumer;
-import raytracer.accel.MeshBVH;
+import java.util.stream.Stream;
+import raytracer.accel.FlatBVH;
+import raytracer.image.FileKind;
+import raytracer.image.IoReason;
 import raytracer.io.obj.ObjModel;
+import raytracer.shapes.mesh.Mesh;
 
 /**
  * Where parsed meshes and their BVHs are kept between runs ({@link MeshCacheFile}), so that a mesh
- * rendered again is read back in bulk instead of parsed and built. One file per OBJ file and set
- * of options ({@code <name>-<hash of path and options>.mesh}), so a changed file replaces its
- * entry rather than adding one.
+ * rendered again is read back in bulk instead of parsed and built.
  *
- * <p>An entry is used only when the OBJ file and every MTL file it read have the size,
- * modification time and CRC-32C of their bytes that they had when it was written (the checksum of
- * the whole file: 8 MB take about 2 ms with the CPU's CRC instruction, against 20-30 ms for
- * SHA-256; 32 bits are plenty to tell an edited file from the same one, with size and time
- * besides, though not to resist a forgery), was made with the same options (smoothing, builder,
- * leaf size) and by the same versions of the formats, and passes its own checksum. Anything else
- * is a warning, and the mesh is parsed and built again, and the entry rewritten. A parse that warned
- * about something (a missing texture, say) is not cached, so the warning and its cause are found
- * afresh each time.
+ * <p><b>Keys.</b> An entry is named by the OBJ file's content and the options
+ * ({@code <name>-<16 hex digits>.mesh}, the name cut to {@value #NAME_CHARS} characters): copies of
+ * one file in several folders share one entry, and an edited file gets another. The content is
+ * identified by its size and two 32-bit checksums of all its bytes, CRC-32C and CRC-32 (64 bits:
+ * the odds that two different files of one size pass as one are 2^-64; both run at several GB/s
+ * with the CPU's instructions, where SHA-256 took over 200 ms for 8 MB in a cold JVM; not meant to
+ * resist a forgery). An entry is used only when the MTL files it read, found from the OBJ file's
+ * folder by the same relative paths, have the contents they had, it was made with the same options
+ * (smoothing, builder, leaf size) by the same versions of the formats, and it passes every check of
+ * {@link MeshCacheFile#read}. Anything else is a warning, and the mesh is parsed and built again,
+ * and the entry rewritten. A parse that warned about something (a missing texture, say) is not
+ * cached, so the warning and its cause are found afresh each time.
+ *
+ * <p><b>Limits.</b> A mesh file smaller than {@link #MIN_OBJ_BYTES} (uncompressed) is neither
+ * looked up nor written: parsing it takes about as long as reading its entry (docs/performance.md).
+ * The entries together stay under a cap ({@link #DEFAULT_MAX_BYTES}, {@code --cache-max} or
+ * {@value #MAX_ENV}): after writing an entry, the least recently used others are deleted until
+ * they fit (an entry read is marked used by its modification time). Temporary files that a killed
+ * writer left behind are deleted once they are {@link #STALE_PARTIAL} old.
  */
 public final class MeshCache {
-    private final Path dir;
+    /** The default cap: some 30 entries of the 871k-triangle dragon (31 MiB each), a small part of a laptop's disk. */
+    public static final long DEFAULT_MAX_BYTES = 1L << 30;
+    /** The environment variable that sets the cap when --cache-max does not. */
+    public static final String MAX_ENV = "RAYTRACER_MESH_CACHE_MAX";
+    /**
+     * OBJ files smaller than this (uncompressed) are not cached: measured in a cold JVM, parsing and
+     * building took 24-60 ms up to 127 KiB (4k triangles), against 50-70 ms to look up and read an
+     * entry; from 230 KiB (7k triangles) on the cache was faster (docs/performance.md).
+     */
+    public static final long MIN_OBJ_BYTES = 192 << 10;
+    /** A temporary file this old is a killed writer's: writing an entry takes well under a second. */
+    static final Duration STALE_PARTIAL = Duration.ofHours(1);
+    /** The most characters of the OBJ file's name kept in an entry's name. */
+    static final int NAME_CHARS = 48;
 
-    private MeshCache(Path dir) {
+    private final Path dir;
+    private final long maxBytes;
+    private final long minObjBytes;
+
+    private MeshCache(Path dir, long maxBytes, long minObjBytes) {
         this.dir = dir;
+        this.maxBytes = maxBytes;
+        this.minObjBytes = minObjBytes;
     }
 
-    /** A cache in {@code dir}, created when the first entry is written. */
+    /** A cache in {@code dir} with the default cap, created when the first entry is written. */
     public static MeshCache in(Path dir) {
-        return new MeshCache(dir);
+        return in(dir, DEFAULT_MAX_BYTES);
+    }
+
+    /** A cache in {@code dir} whose entries stay under {@code maxBytes} together. */
+    public static MeshCache in(Path dir, long maxBytes) {
+        return in(dir, maxBytes, MIN_OBJ_BYTES);
+    }
+
+    /** As {@link #in(Path, long)}, caching OBJ files from {@code minObjBytes} on (tests cache tiny meshes). */
+    static MeshCache in(Path dir, long maxBytes, long minObjBytes) {
+        return new MeshCache(dir, maxBytes, minObjBytes);
     }
 
     /** $XDG_CACHE_HOME/raytracer/meshes, or ~/.cache/raytracer/meshes. */
@@ -49,127 +99,292 @@ public final class MeshCache {
         return base.resolve("raytracer").resolve("meshes");
     }
 
+    /**
+     * A size in bytes as a person writes it: {@code 2G}, {@code 512M}, {@code 100K} (powers of
+     * 1024), or a plain number of bytes; IllegalArgumentException otherwise.
+     */
+    public static long parseSize(String text) {
+        String t = text.strip().toUpperCase(Locale.ROOT);
+        if (t.endsWith("B") && t.length() > 1 && !Character.isDigit(t.charAt(t.length() - 2))) {
+            t = t.substring(0, t.length() - 1); // 2GB, 512MB
+        }
+        int shift = t.isEmpty() ? 0 : switch (t.charAt(t.length() - 1)) {
+            case 'K' -> 10;
+            case 'M' -> 20;
+            case 'G' -> 30;
+            case 'T' -> 40;
+            default -> 0;
+        };
+        String digits = shift == 0 ? t : t.substring(0, t.length() - 1);
+        try {
+            long n = Long.parseLong(digits);
+            if (n < 0 || n > Long.MAX_VALUE >> shift) {
+                throw new NumberFormatException();
+            }
+            return n << shift;
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("a size such as 512M or 2G is expected, got '" + text + "'");
+        }
+    }
+
     public Path dir() {
         return dir;
     }
 
+    /** Makes the folder, saying so when something else is at its name. */
+    private void createDir() throws IOException {
+        FileKind kind = FileKind.of(dir);
+        if (kind != FileKind.DIRECTORY && kind != FileKind.MISSING) {
+            throw new IOException(dir + " is " + kind.words() + ", not a folder");
+        }
+        Files.createDirectories(dir);
+    }
+
     /**
-     * Looks for the entry of {@code obj} made with {@code options}. A stale or damaged entry is a
-     * warning and counts as none; an OBJ file that cannot be read counts as none, silently (its
-     * parse will say why).
+     * Looks for the entry of {@code obj} made with {@code options}, reading it whole: nothing of an
+     * entry is used before all of it is checked, and an entry used is marked as used now. A stale
+     * or damaged entry is a warning and counts as none; an OBJ file that cannot be read counts as
+     * none, silently (its parse will say why); a small one is not looked up.
      */
     Lookup lookup(Path obj, String options, Consumer<String> warn) {
         MeshCacheFile.Stamp stamp;
         try {
-            stamp = MeshCacheFile.stamp(obj);
+            if (uncompressedSize(obj) < minObjBytes) {
+                return new Lookup(this, obj, null, options, null, null, String.format(Locale.ROOT,
+                    "smaller than %d KiB: parsed about as fast as read", minObjBytes / 1024));
+            }
+            stamp = MeshCacheFile.stamp(obj, "");
         } catch (IOException e) {
-            return new Lookup(this, null, options, null, null);
+            return new Lookup(this, obj, null, options, null, null, null);
         }
-        Path file = dir.resolve(obj.getFileName() + "-" + key(stamp.path(), options) + ".mesh");
+        Path file = dir.resolve(entryName(obj, stamp, options));
         if (!Files.isRegularFile(file)) {
-            return new Lookup(this, file, options, stamp, null);
+            return new Lookup(this, obj, file, options, stamp, null, null);
         }
+        Path folder = obj.toAbsolutePath().getParent();
         try {
-            MeshCacheFile.Header header = MeshCacheFile.readHeader(file);
-            String stale = stale(header, stamp, options);
+            MeshCacheFile.Contents contents = MeshCacheFile.read(file, folder);
+            String stale = stale(contents.header(), stamp, options, folder);
             if (stale == null) {
-                return new Lookup(this, file, options, stamp, header);
+                markUsed(file);
+                return new Lookup(this, obj, file, options, stamp, contents, null);
             }
             warn.accept("mesh cache " + file + " is stale (" + stale + "); " + obj.getFileName() + " is parsed again");
         } catch (IOException e) {
-            warn.accept("mesh cache " + file + " is unusable (" + e.getMessage() + "); " + obj.getFileName()
+            warn.accept("mesh cache " + file + " is unusable (" + IoReason.of(e) + "); " + obj.getFileName()
                         + " is parsed again");
         }
-        return new Lookup(this, file, options, stamp, null);
+        return new Lookup(this, obj, file, options, stamp, null, null);
+    }
+
+    /** The bytes of the OBJ text: the file's size, or for gzip the larger of it and the trailer's ISIZE (the size mod 2^32). */
+    private static long uncompressedSize(Path obj) throws IOException {
+        long size = Files.size(obj);
+        if (!obj.getFileName().toString().endsWith(".gz") || size < 18) {
+            return size;
+        }
+        try (FileChannel channel = FileChannel.open(obj, StandardOpenOption.READ)) {
+            ByteBuffer trailer = ByteBuffer.allocate(4).order(ByteOrder.LITTLE_ENDIAN);
+            channel.read(trailer, size - 4);
+            return Math.max(size, Integer.toUnsignedLong(trailer.getInt(0)));
+        }
+    }
+
+    /** Least-recently-used order: an entry read now is the most recently used. */
+    private static void markUsed(Path file) {
+        try {
+            Files.setLastModifiedTime(file, FileTime.from(Instant.now()));
+        } catch (IOException e) {
+            // a cache in a read-only folder still serves; it is only evicted sooner
+        }
     }
 
     /** Why an entry no longer matches its sources, or null when it does. */
-    private static String stale(MeshCacheFile.Header header, MeshCacheFile.Stamp source, String options) {
+    private static String stale(MeshCacheFile.Header header, MeshCacheFile.Stamp source, String options, Path folder) {
         if (!header.source().equals(source)) {
-            return header.source().path().equals(source.path()) ? "the OBJ file changed since" : "it is of another file";
+            return "it is of another file";
         }
         if (!header.options().equals(options)) {
             return "made with " + header.options();
         }
         for (MeshCacheFile.Stamp library : header.libraries()) {
+            Path file = folder.resolve(library.path()).normalize();
             try {
-                if (!MeshCacheFile.stamp(Path.of(library.path())).equals(library)) {
-                    return library.path() + " changed since";
+                if (!MeshCacheFile.stamp(file, library.path()).equals(library)) {
+                    return file + " changed since";
                 }
             } catch (IOException e) {
-                return library.path() + " cannot be read";
+                return file + " cannot be read";
             }
         }
         return null;
     }
 
-    /** The first 16 hex digits of SHA-256 over the file's path and the options. */
-    private static String key(String path, String options) {
+    /**
+     * {@code <name>-<key>.mesh}: the OBJ file's name, cut and with only plain characters kept (a
+     * long name would not fit a folder entry with the temporary file's additions), and the first
+     * 16 hex digits of a SHA-256 over its content's identity and the options.
+     */
+    static String entryName(Path obj, MeshCacheFile.Stamp content, String options) {
+        String name = obj.getFileName().toString().replaceAll("[^A-Za-z0-9._-]", "_");
+        if (name.length() > NAME_CHARS) {
+            name = name.substring(0, NAME_CHARS);
+        }
+        String identity = content.size() + " " + Long.toHexString(content.digest()) + "\n" + options;
         try {
-            MessageDigest sha = MessageDigest.getInstance("SHA-256");
-            byte[] digest = sha.digest((path + "\n" + options).getBytes(StandardCharsets.UTF_8));
-            return HexFormat.of().formatHex(digest).substring(0, 16);
+            byte[] digest = MessageDigest.getInstance("SHA-256").digest(identity.getBytes(StandardCharsets.UTF_8));
+            return name + "-" + HexFormat.of().formatHex(digest).substring(0, 16) + ".mesh";
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-256 is missing from this Java", e);
         }
     }
 
     /**
-     * One OBJ file's place in the cache: the entry found ({@link #header}, null when none is
-     * usable), or where to write one after building.
+     * Deletes the least recently used entries but {@code kept} until all fit under the cap;
+     * returns how many it deleted. Another process deleting one first is no failure.
+     */
+    private int evict(Path kept) throws IOException {
+        record Entry(Path file, long size, FileTime used) {
+        }
+        List<Entry> entries = new ArrayList<>();
+        long total = 0;
+        try (Stream<Path> files = Files.list(dir)) {
+            for (Path file : (Iterable<Path>) files::iterator) {
+                if (file.getFileName().toString().endsWith(".mesh") && Files.isRegularFile(file)) {
+                    try {
+                        Entry e = new Entry(file, Files.size(file), Files.getLastModifiedTime(file));
+                        entries.add(e);
+                        total += e.size();
+                    } catch (IOException gone) {
+                        // deleted meanwhile
+                    }
+                }
+            }
+        }
+        entries.sort(Comparator.comparing(Entry::used));
+        int evicted = 0;
+        for (Entry e : entries) {
+            if (total <= maxBytes) {
+                break;
+            }
+            if (!e.file().equals(kept)) {
+                Files.deleteIfExists(e.file());
+                total -= e.size();
+                evicted++;
+            }
+        }
+        return evicted;
+    }
+
+    /** Deletes the temporary files of writers killed before they finished ({@link #STALE_PARTIAL} old). */
+    private void removeStalePartials() throws IOException {
+        Instant before = Instant.now().minus(STALE_PARTIAL);
+        try (Stream<Path> files = Files.list(dir)) {
+            for (Path file : (Iterable<Path>) files::iterator) {
+                String name = file.getFileName().toString();
+                try {
+                    if (name.startsWith(".") && name.endsWith(".partial") && Files.isRegularFile(file)
+                        && Files.getLastModifiedTime(file).toInstant().isBefore(before)) {
+                        Files.deleteIfExists(file);
+                    }
+                } catch (IOException gone) {
+                    // renamed into place or deleted meanwhile
+                }
+            }
+        }
+    }
+
+    /** What storing an entry did: written, with how many others were evicted to stay under the cap; or why not. */
+    record Stored(boolean written, int evicted, String whyNot) {
+    }
+
+    /**
+     * One OBJ file's place in the cache: the entry found, read whole and checked ({@link #take},
+     * null when none is usable), or where to write one after building, or why there is none.
      */
     static final class Lookup {
         private final MeshCache cache;
+        private final Path obj;
         private final Path file;
         private final String options;
         private final MeshCacheFile.Stamp source;
-        private final MeshCacheFile.Header header;
+        private MeshCacheFile.Contents contents;
+        /** Why the mesh is not cached at all (too small), or null. */
+        private final String notCached;
 
-        private Lookup(MeshCache cache, Path file, String options, MeshCacheFile.Stamp source, MeshCacheFile.Header header) {
+        private Lookup(MeshCache cache, Path obj, Path file, String options, MeshCacheFile.Stamp source,
+                       MeshCacheFile.Contents contents, String notCached) {
             this.cache = cache;
+            this.obj = obj;
             this.file = file;
             this.options = options;
             this.source = source;
-            this.header = header;
+            this.contents = contents;
+            this.notCached = notCached;
         }
 
         /** The usable entry's header, or null. */
         MeshCacheFile.Header header() {
-            return header;
+            return contents == null ? null : contents.header();
         }
 
         Path file() {
             return file;
         }
 
-        /** The entry's mesh and tree, checked against the file's checksum. */
-        MeshCacheFile.Contents read() throws IOException {
-            return MeshCacheFile.read(file);
+        /** The usable entry's mesh and tree, as read and checked when it was looked up; the lookup lets go of them. */
+        MeshCacheFile.Contents take() {
+            MeshCacheFile.Contents taken = contents;
+            contents = null;
+            return taken;
         }
 
         /**
-         * Writes the entry for {@code model} as built into {@code mesh}; a model that warned, or a
-         * folder that cannot be written, is not cached (the second with a warning). True if written.
+         * Writes the entry for {@code model} as built into {@code mesh} and {@code bvh}, then keeps
+         * the cache under its cap; a small mesh, a model that warned, an entry larger than the cap
+         * or a folder that cannot be written is not cached (the last with a warning).
          */
-        boolean store(ObjModel model, MeshBVH mesh, Consumer<String> warn) {
-            if (source == null || !model.warnings().isEmpty()) {
-                return false;
+        Stored store(ObjModel model, Mesh mesh, FlatBVH bvh, Consumer<String> warn) {
+            if (notCached != null) {
+                return new Stored(false, 0, notCached);
             }
+            if (source == null) {
+                return new Stored(false, 0, null);
+            }
+            if (!model.warnings().isEmpty()) {
+                return new Stored(false, 0, "its parse warned");
+            }
+            long size = MeshCacheFile.size(mesh, bvh);
+            if (size > cache.maxBytes) {
+                return new Stored(false, 0, String.format(Locale.ROOT, "its entry of %.1f MiB is larger than the cache's cap "
+                                                          + "of %.1f MiB", size / 1048576.0, cache.maxBytes / 1048576.0));
+            }
+            Path folder = obj.toAbsolutePath().getParent();
             try {
                 List<MeshCacheFile.Stamp> libraries = new ArrayList<>();
                 for (Path library : model.libraries()) {
-                    libraries.add(MeshCacheFile.stamp(library));
+                    libraries.add(MeshCacheFile.stamp(library, folder.relativize(library.toAbsolutePath().normalize()).toString()));
                 }
                 MeshCacheFile.Header h = new MeshCacheFile.Header(source, options, libraries, model.faces(), model.ngons(),
                     model.mesh().vertexCount(), model.mesh().triangleCount(), model.mesh().hasNormals(),
                     model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials(),
                     model.sheets());
-                Files.createDirectories(cache.dir);
-                MeshCacheFile.write(file, h, mesh.mesh(), mesh.bvh());
-                return true;
-            } catch (IOException | RuntimeException e) {
-                warn.accept("cannot write the mesh cache " + file + " (" + e.getMessage() + "); the mesh will be parsed again next time");
-                return false;
+                cache.createDir();
+                MeshCacheFile.write(file, h, mesh, bvh, folder);
+            } catch (IOException e) {
+                warn.accept("cannot write the mesh cache " + file + " (" + IoReason.of(e) + "); the mesh will be parsed again next time");
+                return new Stored(false, 0, null);
+            } catch (RuntimeException e) {
+                warn.accept("cannot write the mesh cache " + file + " (" + (e.getMessage() != null ? e.getMessage()
+                            : e.getClass().getSimpleName()) + "); the mesh will be parsed again next time");
+                return new Stored(false, 0, null);
+            }
+            try {
+                cache.removeStalePartials();
+                return new Stored(true, cache.evict(file), null);
+            } catch (IOException e) {
+                warn.accept("cannot keep the mesh cache " + cache.dir + " under its cap (" + IoReason.of(e) + ")");
+                return new Stored(true, 0, null);
             }
         }
     }

@@ -25,7 +25,8 @@ final class MeshCacheHeader {
     private MeshCacheHeader() {
     }
 
-    static byte[] encode(Header h) throws IOException {
+    /** The header's bytes; texture paths are written relative to {@code folder}, the OBJ file's. */
+    static byte[] encode(Header h, Path folder) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         DataOutputStream out = new DataOutputStream(bytes);
         writeStamp(out, h.source());
@@ -47,7 +48,7 @@ final class MeshCacheHeader {
         }
         out.writeInt(h.materials().size());
         for (ObjMaterial m : h.materials()) {
-            writeMaterial(out, m);
+            writeMaterial(out, m, folder);
         }
         out.writeInt(h.sheets().size());
         for (int id : h.sheets()) {
@@ -57,7 +58,8 @@ final class MeshCacheHeader {
         return bytes.toByteArray();
     }
 
-    static Header decode(byte[] head) throws IOException {
+    /** The header of its bytes; texture paths are resolved against {@code folder}, the OBJ file's now. */
+    static Header decode(byte[] head, Path folder) throws IOException {
         DataInputStream in = new DataInputStream(new ByteArrayInputStream(head));
         Stamp source = readStamp(in);
         String options = in.readUTF();
@@ -76,7 +78,7 @@ final class MeshCacheHeader {
                                in.readDouble());
         List<ObjMaterial> materials = new ArrayList<>();
         for (int i = count(in); i > 0; i--) {
-            materials.add(readMaterial(in));
+            materials.add(readMaterial(in, folder));
         }
         Set<Integer> sheets = new TreeSet<>();
         for (int i = count(in); i > 0; i--) {
@@ -101,7 +103,7 @@ final class MeshCacheHeader {
         return n;
     }
 
-    private static void writeMaterial(DataOutputStream out, ObjMaterial m) throws IOException {
+    private static void writeMaterial(DataOutputStream out, ObjMaterial m, Path folder) throws IOException {
         out.writeUTF(m.name());
         for (double[] color : new double[][] {m.kd(), m.ks(), m.ka(), m.ke()}) {
             for (int k = 0; k < 3; k++) {
@@ -112,12 +114,21 @@ final class MeshCacheHeader {
         out.writeDouble(m.dissolve());
         out.writeDouble(m.ior());
         out.writeInt(m.illum());
-        out.writeUTF(m.mapKd() == null ? "" : m.mapKd().toString());
-        out.writeUTF(m.mapBump() == null ? "" : m.mapBump().toString());
+        out.writeUTF(relative(m.mapKd(), folder));
+        out.writeUTF(relative(m.mapBump(), folder));
         out.writeDouble(m.bumpScale());
     }
 
-    private static ObjMaterial readMaterial(DataInputStream in) throws IOException {
+    /** A texture's path relative to the OBJ file's folder, so that a copy of the files elsewhere finds its own; "" for none. */
+    private static String relative(Path texture, Path folder) {
+        return texture == null ? "" : folder.relativize(texture.toAbsolutePath().normalize()).toString();
+    }
+
+    private static Path resolved(String texture, Path folder) {
+        return texture.isEmpty() ? null : folder.resolve(texture).normalize();
+    }
+
+    private static ObjMaterial readMaterial(DataInputStream in, Path folder) throws IOException {
         String name = in.readUTF();
         double[][] colors = new double[4][3];
         for (double[] color : colors) {
@@ -132,18 +143,17 @@ final class MeshCacheHeader {
         String mapKd = in.readUTF();
         String mapBump = in.readUTF();
         return new ObjMaterial(name, colors[0], colors[1], colors[2], colors[3], ns, dissolve, ior, illum,
-                               mapKd.isEmpty() ? null : Path.of(mapKd), mapBump.isEmpty() ? null : Path.of(mapBump),
+                               resolved(mapKd, folder), resolved(mapBump, folder),
                                in.readDouble());
     }
 
     private static void writeStamp(DataOutputStream out, Stamp s) throws IOException {
         out.writeUTF(s.path());
         out.writeLong(s.size());
-        out.writeLong(s.modified());
-        out.writeInt(s.crc());
+        out.writeLong(s.digest());
     }
 
     private static Stamp readStamp(DataInputStream in) throws IOException {
-        return new Stamp(in.readUTF(), in.readLong(), in.readLong(), in.readInt());
+        return new Stamp(in.readUTF(), in.readLong(), in.readLong());
     }
 }

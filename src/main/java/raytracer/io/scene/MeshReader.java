@@ -2,12 +2,16 @@ package raytracer.io.scene;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import raytracer.accel.MeshBVH;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.Texture;
+import raytracer.image.FileKind;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
@@ -24,8 +28,9 @@ import raytracer.math.RGBColor;
 import raytracer.textures.ImageTexture;
 
 /**
- * A {@code mesh} object: an OBJ or PLY file under a BVH. Without a {@code material} key the file's MTL
- * materials are used, mapped onto ours by {@link #fromMtl}.
+ * The {@code mesh} objects of one scene: OBJ or PLY files under BVHs. Without a {@code material} key the
+ * file's MTL materials are used, mapped onto ours by {@link #fromMtl}. Objects naming one file
+ * with the same options share one parse and one tree ({@link SharedMesh}).
  */
 final class MeshReader {
     /**
@@ -36,59 +41,129 @@ final class MeshReader {
     static final int MEDIAN_LEAF_SIZE = 8;
     static final int SAH_MAX_LEAF_SIZE = 4;
 
-    private MeshReader() {
+    private final MeshCache cache;
+    /** Per OBJ file and options: the one parse (or cache entry) and tree every object naming them shares. */
+    private final Map<String, SharedMesh> shared = new HashMap<>();
+    /** How many objects name each shared mesh, in the order first named. */
+    private final Map<SharedMesh, Integer> users = new LinkedHashMap<>();
+    /** Objects that differ only by their transform: one object, instanced. */
+    private final Map<ObjectKey, PendingMesh> objects = new HashMap<>();
+
+    /** What makes two mesh objects the same object: the mesh, the material given, the normal maps, shadows. */
+    private record ObjectKey(SharedMesh mesh, Material override, String normalMaps, boolean castsShadows) {
     }
 
-    static GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures,
-                                MeshCache cache) throws SceneException {
-        Path file = o.source().resolve(o.requiredString("file"));
+    /** The mesh objects of one scene, read from {@code cache} when it has them (null: no cache). */
+    MeshReader(MeshCache cache) {
+        this.cache = cache;
+    }
+
+    /**
+     * A {@code mesh} object: its OBJ file parsed, or read from the cache, once per file and options
+     * for the whole scene; an object that differs from an earlier one only by its transform (which
+     * the caller wraps around it) is that earlier object.
+     */
+    GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures) throws SceneException {
+        Path file = o.path("file");
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
         if (!builder.equals("median") && !builder.equals("sah")) {
             throw o.source().error(o.raw("bvh"), "unknown bvh builder '" + builder + "'; allowed: median, sah");
         }
-        String name = file.getFileName().toString();
         // everything that changes what is cached: the parse's smoothing, the builder and its leaves
         String options = "smooth=" + smooth + " bvh=" + builder + " leaf="
                          + (builder.equals("median") ? MEDIAN_LEAF_SIZE : SAH_MAX_LEAF_SIZE);
-        MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
-        MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
-        ObjModel model = null;
-        long parseNanos = 0;
-        if (cached == null) {
-            long start = System.nanoTime();
-            model = parse(o, file, smooth);
-            parseNanos = System.nanoTime() - start;
-            report.recordTiming("parse " + name, parseNanos);
-            model.warnings().forEach(report::addWarning);
-            report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
-                                          model.faces()));
-        } else {
-            report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
+        String key = file.toAbsolutePath().normalize() + "\n" + options;
+        SharedMesh mesh = shared.get(key);
+        if (mesh == null) {
+            mesh = load(o, file, smooth, builder, options, report);
+            shared.put(key, mesh);
         }
-        List<ObjMaterial> objMaterials = cached != null ? cached.materials() : model.materials();
-        Set<Integer> sheets = cached != null ? cached.sheets() : model.sheets();
+        users.merge(mesh, 1, Integer::sum);
+        ObjectKey objectKey = new ObjectKey(mesh, override, normalMapKey(o), o.bool("casts-shadows", true));
+        PendingMesh same = objects.get(objectKey);
+        if (same != null && o.has("transform")) {
+            return same;
+        }
+        PendingMesh object = object(o, mesh, override, report, textures);
+        if (o.has("transform")) {
+            objects.put(objectKey, object);
+        }
+        return object;
+    }
+
+    /** Parses the file, or reads its cache entry, with the load report's figures and warnings. */
+    private SharedMesh load(YamlObject o, Path file, boolean smooth, String builder, String options, LoadReport report)
+            throws SceneException {
+        String name = file.getFileName().toString();
+        report.addInput(file);
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            // before the cache's checksum of the file, which would block on a FIFO as a parse would
+            throw o.source().error(o.raw("file"), "cannot read mesh " + file + ": " + notRegular);
+        }
+        long lookupStart = System.nanoTime();
+        MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
+        long readNanos = System.nanoTime() - lookupStart;
+        MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
+        if (cached != null) {
+            report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
+            cached.libraries().forEach(library -> report.addInput(file.toAbsolutePath().getParent().resolve(library.path())));
+            return new SharedMesh(file, builder, report, lookup, readNanos);
+        }
+        long start = System.nanoTime();
+        ObjModel model = parse(o, file, smooth);
+        long parseNanos = System.nanoTime() - start;
+        report.recordTiming("parse " + name, parseNanos);
+        model.warnings().forEach(report::addWarning);
+        report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
+                                      model.faces()));
+        model.libraries().forEach(report::addInput);
+        return new SharedMesh(file, builder, report, lookup, model, parseNanos);
+    }
+
+    /** One scene object around the shared mesh: its materials (the MTL's unless it names one) and normal maps. */
+    private static PendingMesh object(YamlObject o, SharedMesh mesh, Material override, LoadReport report, TextureReader textures)
+            throws SceneException {
+        List<ObjMaterial> objMaterials = mesh.materials();
         List<Material> materials = new ArrayList<>();
         if (override == null) {
             for (int id = 0; id < objMaterials.size(); id++) {
-                materials.add(fromMtl(objMaterials.get(id), sheets.contains(id), textures, report));
+                materials.add(fromMtl(objMaterials.get(id), mesh.sheets().contains(id), textures, report));
             }
         }
         List<NormalMap> maps = normalMaps(o, objMaterials, textures, report);
-        Build build = new Build(o, file, smooth, builder, materials, report, lookup);
-        ObjModel parsed = model;
-        long parsedIn = parseNanos;
-        PendingMesh mesh = new PendingMesh("mesh " + name, cached != null ? cached.bounds() : model.mesh().bounds(), materials,
-                                           () -> {
-                                               MeshBVH made = cached != null ? build.fromCache() : build.of(parsed, parsedIn);
-                                               for (NormalMap map : maps) {
-                                                   made.triangles().setNormalMap(map.id(), map.texture(), map.tangent());
-                                               }
-                                               return made;
-                                           });
-        mesh.setMaterial(override != null ? override
-                         : objMaterials.isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
-        return mesh;
+        PendingMesh object = new PendingMesh("mesh " + mesh.name(), mesh.bounds(), materials, () -> {
+            MeshBVH made = mesh.objectWith(materials);
+            for (NormalMap map : maps) {
+                made.triangles().setNormalMap(map.id(), map.texture(), map.tangent());
+            }
+            return made;
+        });
+        object.setMaterial(override != null ? override
+                           : objMaterials.isEmpty() ? MaterialReader.defaultMaterial() : materials.get(0));
+        return object;
+    }
+
+    /** What an object's normal-map key asks for, as a key: the MTL's maps, none, or a file in a space. */
+    private static String normalMapKey(YamlObject o) throws SceneException {
+        if (!o.has("normal-map")) {
+            return "mtl";
+        }
+        if (o.raw("normal-map") instanceof org.yaml.snakeyaml.nodes.ScalarNode) {
+            return "scalar " + o.requiredString("normal-map");
+        }
+        YamlObject map = new YamlObject(o.source(), o.raw("normal-map"), "normal-map", java.util.Set.of("file", "space"));
+        return "file " + map.path("file") + " space " + map.string("space", "tangent");
+    }
+
+    /** A line per mesh file that several objects share, for --stats. */
+    void reportSharing(LoadReport report) {
+        users.forEach((mesh, count) -> {
+            if (count > 1) {
+                report.addStatistic("mesh " + mesh.name() + ": " + count + " objects share one copy of it");
+            }
+        });
     }
 
     /**
@@ -147,7 +222,7 @@ final class MeshReader {
             if (!space.equals("tangent") && !space.equals("object")) {
                 throw o.source().error(map.raw("space"), "unknown normal-map space '" + space + "'; allowed: object, tangent");
             }
-            ImageTexture texture = new ImageTexture(textures.linearImage(o.source().resolve(map.requiredString("file")), map.raw("file")));
+            ImageTexture texture = new ImageTexture(textures.linearImage(map.path("file"), map.raw("file")));
             int ids = Math.max(1, materials.size());
             for (int id = 0; id < ids; id++) {
                 maps.add(new NormalMap(id, texture, space.equals("tangent")));

@@ -34,7 +34,7 @@ final class ObjectReader {
     }
 
     static GeometricObject read(Source source, Node node, Map<String, Material> materials, LoadReport report,
-                                TextureReader textures, MeshCache cache) throws SceneException {
+                                TextureReader textures, MeshReader meshes) throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
@@ -46,7 +46,7 @@ final class ObjectReader {
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
         if (kind.equals("mesh")) {
-            shape = MeshReader.read(o, o.has("material") ? material(o, materials) : null, report, textures, cache);
+            shape = meshes.read(o, o.has("material") ? material(o, materials) : null, report, textures);
         } else {
             try {
                 shape = shape(kind, o);
@@ -59,7 +59,12 @@ final class ObjectReader {
         if (!o.has("transform")) {
             return shape;
         }
-        Instance instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+        Instance instance;
+        try {
+            instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+        } catch (IllegalArgumentException e) {
+            throw source.error(o.raw("transform"), e.getMessage());
+        }
         instance.setCastsShadows(shape.castsShadows());
         return instance;
     }
@@ -99,7 +104,7 @@ final class ObjectReader {
         Material m = materials.get(name);
         if (m == null) {
             throw o.source().error(o.raw("material"), "material '" + name + "' is not defined; defined: "
-                                   + (materials.isEmpty() ? "none" : String.join(", ", new TreeSet<>(materials.keySet()))));
+                                   + (materials.isEmpty() ? "none" : YamlObject.names(materials.keySet())));
         }
         return m;
     }

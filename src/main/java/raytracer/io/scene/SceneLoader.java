@@ -1,7 +1,11 @@
 package raytracer.io.scene;
 
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.Reader;
 import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
@@ -26,6 +30,7 @@ import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
+import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
@@ -33,6 +38,7 @@ import raytracer.core.World;
 import raytracer.filters.Filters;
 import raytracer.filters.Gaussian;
 import raytracer.image.DisplayEncoding;
+import raytracer.image.Film;
 import raytracer.lights.Ambient;
 import raytracer.math.RGBColor;
 import raytracer.samplers.Samplers;
@@ -73,7 +79,7 @@ public final class SceneLoader {
      * to it when it does not (null: no cache).
      */
     public static LoadedScene load(Path file, MeshCache cache) throws SceneException {
-        return load(source(file), text(file), OptionalInt.empty(), cache);
+        return withInput(load(source(file), text(file), OptionalInt.empty(), cache), file);
     }
 
     /**
@@ -81,17 +87,44 @@ public final class SceneLoader {
      * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
      */
     public static LoadedScene load(Path file, OptionalInt areaLightSamples) throws SceneException {
-        return load(source(file), text(file), areaLightSamples, null);
+        return withInput(load(source(file), text(file), areaLightSamples, null), file);
+    }
+
+    private static LoadedScene withInput(LoadedScene loaded, Path file) {
+        loaded.report().addInput(file);
+        return loaded;
     }
 
     static Source source(Path file) {
         return new Source(file.toString(), file.toAbsolutePath().getParent());
     }
 
-    /** The file's text, or a SceneException saying why it cannot be read. */
+    /**
+     * The file's text, or a SceneException saying why it cannot be read. The file may be a pipe (a
+     * scene written by another program): it is read up to {@link #MAX_CHARACTERS} and refused past
+     * that, so a file that never ends ({@code /dev/zero}) stops there rather than filling the heap.
+     */
     static String text(Path file) throws SceneException {
-        try {
-            return Files.readString(file, StandardCharsets.UTF_8);
+        if (Files.isDirectory(file)) {
+            throw new SceneException("cannot read scene file " + file + ": it is a directory");
+        }
+        CharsetDecoder utf8 = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+            .onUnmappableCharacter(CodingErrorAction.REPORT);
+        try (Reader in = new InputStreamReader(Files.newInputStream(file), utf8)) {
+            StringBuilder text = new StringBuilder();
+            char[] buffer = new char[1 << 16];
+            long codePoints = 0;
+            for (int n; (n = in.read(buffer)) > 0; ) {
+                text.append(buffer, 0, n);
+                for (int i = 0; i < n; i++) {
+                    // a code point is a char that is not the second half of a surrogate pair
+                    codePoints += Character.isLowSurrogate(buffer[i]) ? 0 : 1;
+                }
+                if (codePoints > MAX_CHARACTERS) {
+                    throw tooLong(file.toString());
+                }
+            }
+            return text.toString();
         } catch (NoSuchFileException e) {
             throw new SceneException("cannot read scene file " + file + ": no such file");
         } catch (AccessDeniedException e) {
@@ -99,9 +132,13 @@ public final class SceneLoader {
         } catch (CharacterCodingException e) {
             throw new SceneException("cannot read scene file " + file + ": not UTF-8 text");
         } catch (IOException e) {
-            String reason = Files.isDirectory(file) ? "it is a directory" : e.getMessage();
-            throw new SceneException("cannot read scene file " + file + ": " + reason, e);
+            throw new SceneException("cannot read scene file " + file + ": " + e.getMessage(), e);
         }
+    }
+
+    private static SceneException tooLong(String name) {
+        return new SceneException(name + ": the scene file has more than the " + MAX_CHARACTERS + " characters a scene may hold "
+                                  + "(put large meshes in OBJ files)");
     }
 
     /** Reads scene text; {@code sourceName} is used in messages, relative paths start at the working directory. */
@@ -118,10 +155,14 @@ public final class SceneLoader {
         RayTreeSettings rayTree = RayTreeSettings.FULL_TREE.withCutoff(readCutoff(source, scene));
         DisplayEncoding encoding = readEncoding(source, scene);
         LoadReport report = new LoadReport();
-        TextureReader textures = new TextureReader(source);
+        TextureReader textures = new TextureReader(source, report);
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
             world.setBackground(textures.environment(scene.raw("environment"), "environment"));
+            if (scene.has("background")) {
+                report.addWarning(source.at(scene.raw("background")) + ": 'background' is not used: the 'environment' map is "
+                                  + "what rays that miss every object see");
+            }
         }
         if (scene.has("pass")) {
             try {
@@ -145,9 +186,11 @@ public final class SceneLoader {
         if (objects.isEmpty()) {
             report.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
         }
+        MeshReader meshes = new MeshReader(cache);
         for (Node object : objects) {
-            world.addObject(ObjectReader.read(source, object, materials, report, textures, cache));
+            world.addObject(ObjectReader.read(source, object, materials, report, textures, meshes));
         }
+        meshes.reportSharing(report);
         return new LoadedScene(world, rayTree, encoding, report);
     }
 
@@ -162,10 +205,8 @@ public final class SceneLoader {
 
     /** The YAML node tree of the text; size, characters and syntax checked, in that order. */
     private static Node compose(Source source, String text) throws SceneException {
-        int length = text.codePointCount(0, text.length());
-        if (length > MAX_CHARACTERS) {
-            throw new SceneException(source.name() + ": the scene file has " + length + " characters, more than the "
-                                     + MAX_CHARACTERS + " a scene may hold (put large meshes in OBJ files)");
+        if (text.codePointCount(0, text.length()) > MAX_CHARACTERS) {
+            throw tooLong(source.name());
         }
         int bad = SceneText.firstUnprintable(text);
         if (bad >= 0) {
@@ -177,16 +218,30 @@ public final class SceneLoader {
         LoaderOptions options = new LoaderOptions();
         options.setAllowDuplicateKeys(false);
         options.setCodePointLimit(MAX_CHARACTERS);
+        SceneText reader = new SceneText(source.name(), text);
         try {
-            return new Composer(new ParserImpl(new SceneText(source.name(), text), options), new Resolver(), options)
-                .getSingleNode();
+            return new Composer(new ParserImpl(reader, options), new Resolver(), options).getSingleNode();
         } catch (MarkedYAMLException e) {
             String problem = e.getProblem() != null ? e.getProblem() : e.getMessage();
             throw (e.getProblemMark() != null ? source.error(e.getProblemMark(), "syntax error: " + problem)
                                               : new SceneException(source.name() + ": syntax error: " + problem));
         } catch (YAMLException e) {
-            throw new SceneException(source.name() + ": syntax error: " + e.getMessage().replace('\n', ' '));
+            // SnakeYAML's limits (nesting, aliases) carry no mark: where the reader stopped is where the limit was passed
+            throw source.error(reader.getMark(), limit(e.getMessage(), options));
         }
+    }
+
+    /** SnakeYAML's message of a limit passed, in words that say what to change. */
+    private static String limit(String message, LoaderOptions options) {
+        String m = message == null ? "" : message.replace('\n', ' ');
+        if (m.startsWith("Nesting Depth exceeded")) {
+            return "lists and mappings nested deeper than " + options.getNestingDepthLimit() + " levels";
+        }
+        if (m.startsWith("Number of aliases")) {
+            return "more than " + options.getMaxAliasesForCollections() + " aliases (*name) of lists or mappings; a scene "
+                   + "this repetitive is refused rather than expanded";
+        }
+        return "syntax error: " + m;
     }
 
     private static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
@@ -201,8 +256,14 @@ public final class SceneLoader {
             throw source.error(image.raw("sampler"), "unknown sampler '" + samplerName + "'; allowed: "
                                + String.join(", ", Samplers.names()));
         }
-        return new ViewPlane(image.integer("width", 640, 1), image.integer("height", 360, 1),
-                             image.integer("samples", 4, 1), Samplers.byName(samplerName),
+        int width = image.integer("width", 640, 1);
+        int height = image.integer("height", 360, 1);
+        if ((long) width * height > Film.MAX_PIXELS) {
+            throw source.error(image.has("width") ? image.raw("width") : image.raw("height"), "an image of " + width + " x "
+                               + height + " pixels is not possible: it holds at most " + Film.MAX_PIXELS + " pixels");
+        }
+        return new ViewPlane(width, height,
+                             image.integer("samples", 4, 1, Sampler.MAX_SAMPLES), Samplers.byName(samplerName),
                              image.integer("max-depth", 5, 0, ViewPlane.MAX_DEPTH), image.number("exposure", 1, 0, true),
                              readFilter(source, image));
     }

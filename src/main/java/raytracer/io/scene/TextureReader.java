@@ -24,8 +24,16 @@ final class TextureReader {
     private final Map<Path, Film> images = new HashMap<>();
     private final Map<Path, Film> linearImages = new HashMap<>();
 
+    /** The files read are noted in {@code inputs}. */
+    private final LoadReport inputs;
+
     TextureReader(Source source) {
+        this(source, new LoadReport());
+    }
+
+    TextureReader(Source source, LoadReport inputs) {
         this.source = source;
+        this.inputs = inputs;
     }
 
     Texture texture(Node node) throws SceneException {
@@ -52,7 +60,7 @@ final class TextureReader {
         YamlObject e = new YamlObject(source, node, what, Set.of("file", "intensity", "rotate-y"));
         Film map = image(e);
         double intensity = e.number("intensity", 1, 0, false);
-        e.checkEmission("intensity", intensity, "file", "the brightest pixel of " + source.resolve(e.requiredString("file")),
+        e.checkEmission("intensity", intensity, "file", "the brightest pixel of " + e.path("file"),
                         brightest(map));
         return new EnvironmentMap(map, intensity, e.number("rotate-y", 0));
     }
@@ -80,6 +88,7 @@ final class TextureReader {
     private Film image(Path path, Node where, boolean srgb) throws SceneException {
         Map<Path, Film> cache = srgb ? images : linearImages;
         Film film = cache.get(path);
+        inputs.addInput(path);
         if (film == null) {
             try {
                 film = ImageFiles.read(path, srgb);
@@ -92,6 +101,6 @@ final class TextureReader {
     }
 
     private Film image(YamlObject o) throws SceneException {
-        return image(source.resolve(o.requiredString("file")), o.raw("file"));
+        return image(o.path("file"), o.raw("file"));
     }
 }

@@ -29,10 +29,30 @@ final class TransformReader {
             String kind = step.keyNodes().keySet().iterator().next();
             m = step(source, step, kind).multiply(m);
         }
-        if (m.determinant3x3() == 0) {
+        double det = m.determinant3x3();
+        if (!Double.isFinite(det) || !finite(m)) {
+            throw source.error(node, "the transform overflows: its determinant is " + det + " (scales, matrix entries or their "
+                                     + "products past 1.8e308, the largest double)");
+        }
+        if (det == 0) {
             throw source.error(node, "the transform is singular (a zero scale?)");
         }
+        if (!finite(m.inverse())) {
+            throw source.error(node, "the transform's inverse overflows: its determinant " + det + " is too close to 0 "
+                                     + "(a scale near 0?)");
+        }
         return m;
+    }
+
+    private static boolean finite(Matrix4 m) {
+        for (int i = 0; i < 4; i++) {
+            for (int j = 0; j < 4; j++) {
+                if (!Double.isFinite(m.get(i, j))) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 
     private static Matrix4 step(Source source, YamlObject step, String kind) throws SceneException {

@@ -309,6 +309,33 @@ final class YamlObject {
         return "a mapping";
     }
 
+    /** The most names a message lists; the rest are counted. */
+    static final int NAMES_LISTED = 10;
+
+    /**
+     * Names for a message, sorted: all of them, or the first {@value #NAMES_LISTED} and how many
+     * more (200,000 materials would otherwise make a line of 1.7 MB).
+     */
+    static String names(java.util.Collection<String> names) {
+        List<String> sorted = new ArrayList<>(new TreeSet<>(names));
+        if (sorted.size() <= NAMES_LISTED) {
+            return String.join(", ", sorted);
+        }
+        return String.join(", ", sorted.subList(0, NAMES_LISTED)) + String.format(java.util.Locale.ROOT, " and %,d more",
+                                                                                 sorted.size() - NAMES_LISTED);
+    }
+
+    /** A file named by {@code key}, resolved against the scene's folder; a name that is no path is an error at it. */
+    java.nio.file.Path path(String key) throws SceneException {
+        String name = requiredString(key);
+        try {
+            return source.resolve(name);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw source.error(raw(key), "'" + key + "' in " + what + " is not a valid path (" + e.getReason() + "): '"
+                                         + name + "'");
+        }
+    }
+
     static String format(double v) {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
     }

@@ -111,6 +111,7 @@ class PlyLoaderTest {
         truncated face           | 'HEADER3 0 1\\n'                                                                    | face 0 (of 1, counting from 0): the file ends early (truncated)
         not a number             | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 zero 0\\n' | vertex 0 (of 1, counting from 0): property 'y': 'zero' is not a number
         not finite               | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 NaN 0\\n' | vertex 0 (of 1, counting from 0): its position is not finite
+        beyond a triangle        | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty double y\\nproperty float z\\nend_header\\n0 1e80 0\\n' | vertex 0 (of 1, counting from 0): its position coordinate 1.0E80 is beyond 1.0E75
         real index               | 'HEADER3 0 1 2.5\\n'                                                                | is not an integer
         overstated count         | 'ply\\nformat binary_little_endian 1.0\\nelement vertex 700000000\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n' | vertex 0 (of 700000000, counting from 0): the file ends early
         """)

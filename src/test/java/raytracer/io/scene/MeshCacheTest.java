@@ -11,8 +11,11 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -21,6 +24,8 @@ import raytracer.accel.MeshBVH;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
+import raytracer.math.BBox;
+import raytracer.render.SceneAnalysis;
 import raytracer.render.Renders;
 import raytracer.shapes.mesh.Mesh;
 
@@ -71,7 +76,8 @@ class MeshCacheTest {
     }
 
     private MeshCache cache() {
-        return MeshCache.in(dir.resolve("cache"));
+        // every mesh cached, however small
+        return MeshCache.in(dir.resolve("cache"), Long.MAX_VALUE, 0);
     }
 
     /** A load, prepared, with its mesh object, its report and its image (PFM bytes). */
@@ -79,14 +85,27 @@ class MeshCacheTest {
     }
 
     private Run run(Path scene, MeshCache cache) throws IOException, SceneException {
+        return run(scene, cache, () -> { });
+    }
+
+    /** As {@link #run(Path, MeshCache)}, with the scene analysis on, and {@code between} run after loading, before preparing. */
+    private Run run(Path scene, MeshCache cache, IoStep between) throws IOException, SceneException {
         LoadedScene loaded = SceneLoader.load(scene, cache);
         World world = loaded.world();
+        SceneAnalysis.apply(world, loaded.rayTree());
+        between.run();
         world.prepare();
         Film film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
         Renders.render(world, 1, 1, film);
         Path pfm = dir.resolve("image.pfm");
         ImageWriters.write(film, 1, pfm);
-        return new Run((MeshBVH) world.objects().get(0), loaded.report(), Files.readAllBytes(pfm));
+        MeshBVH mesh = world.objects().isEmpty() ? null : (MeshBVH) world.objects().get(0);
+        return new Run(mesh, loaded.report(), Files.readAllBytes(pfm));
+    }
+
+    @FunctionalInterface
+    private interface IoStep {
+        void run() throws IOException;
     }
 
     private Path entry() throws IOException {
@@ -154,9 +173,16 @@ class MeshCacheTest {
         other[8]++;
         Files.write(entry, other);
         expectRebuilt(scene, reference, "written by another version");
-        // the OBJ changed (a comment added: the same mesh, another file)
+        // the OBJ changed (a comment added: the same mesh, another file): entries are keyed by content,
+        // so this is another entry, written beside the old one (which the cap will evict when it is the least used)
         Files.writeString(obj, Files.readString(obj) + "# edited\n");
-        expectRebuilt(scene, reference, "is stale (the OBJ file changed since)");
+        Run edited = run(scene, cache());
+        assertEquals(List.of(), edited.report().warnings());
+        assertTrue(mentions(edited.report(), "written to the mesh cache"), edited.report().statistics().toString());
+        assertArrayEquals(reference.image(), edited.image());
+        try (Stream<Path> files = Files.list(dir.resolve("cache"))) {
+            assertEquals(2, files.count());
+        }
         // an MTL file it read changed
         Files.writeString(dir.resolve("grid.mtl"), Files.readString(dir.resolve("grid.mtl")) + "# edited\n");
         expectRebuilt(scene, reference, "grid.mtl changed since");
@@ -171,6 +197,110 @@ class MeshCacheTest {
         assertTrue(rebuilt.report().warnings().get(0).contains(warning), rebuilt.report().warnings().toString());
         assertTrue(mentions(rebuilt.report(), "written to the mesh cache"), rebuilt.report().statistics().toString());
         assertArrayEquals(reference.image(), rebuilt.image());
+    }
+
+    /** Where the big-endian bytes of {@code value} first occur in {@code bytes} (the header is written by DataOutput). */
+    private static int find(byte[] bytes, double value) {
+        byte[] pattern = ByteBuffer.allocate(8).putDouble(value).array();
+        outer:
+        for (int i = 0; i + 8 <= bytes.length; i++) {
+            for (int k = 0; k < 8; k++) {
+                if (bytes[i + k] != pattern[k]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        throw new AssertionError("value " + value + " not found");
+    }
+
+    /**
+     * Issue 25, item 5: the header is checked with everything else before any of it is used. Before,
+     * bounds moved out of view made the scene analysis leave the mesh out, so the entry was never
+     * read and never failed its checksum: the mesh was missing from every image without a word; a
+     * damaged Kd warned "parsed again" but rendered with the header's colour.
+     */
+    @Test
+    void aDamagedHeaderIsNeverUsed() throws IOException, SceneException {
+        Path scene = scene("");
+        grid(8);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        byte[] good = Files.readAllBytes(entry);
+        BBox box = reference.mesh().mesh().bounds();
+        // the bounds moved 1000 units to the side: out of the camera's view
+        byte[] moved = good.clone();
+        ByteBuffer.wrap(moved).putDouble(find(good, box.x0()), box.x0() + 1000).putDouble(find(good, box.x1()), box.x1() + 1000);
+        Files.write(entry, moved);
+        expectRebuilt(scene, reference, "its checksum does not match");
+        // material a's Kd 0.8 0.3 0.2 made green
+        byte[] recoloured = good.clone();
+        ByteBuffer.wrap(recoloured).putDouble(find(good, 0.8), 0).putDouble(find(good, 0.3), 1);
+        Files.write(entry, recoloured);
+        expectRebuilt(scene, reference, "its checksum does not match");
+    }
+
+    /**
+     * Issue 25, item 6: an entry is read once. Before, its header was read when the scene was loaded
+     * and its arrays when it was prepared, through two opens: an entry replaced in between rendered
+     * one version's geometry with the other's materials and bounds, silently.
+     */
+    @Test
+    void anEntryReplacedAfterLoadingIsNotMixedIn() throws IOException, SceneException {
+        Path scene = scene("");
+        // another valid entry: the grid of 4 written by the same program, in another folder
+        String grid4 = Files.readString(grid(4));
+        Path other = Files.createDirectories(dir.resolve("other"));
+        Files.copy(dir.resolve("grid.mtl"), other.resolve("grid.mtl"));
+        Files.writeString(other.resolve("grid.obj"), grid4);
+        Files.copy(scene, other.resolve("s.yaml"));
+        run(other.resolve("s.yaml"), MeshCache.in(other.resolve("cache"), Long.MAX_VALUE, 0));
+        byte[] otherEntry;
+        try (Stream<Path> files = Files.list(other.resolve("cache"))) {
+            otherEntry = Files.readAllBytes(files.findFirst().orElseThrow());
+        }
+        grid(8);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        Run mixed = run(scene, cache(), () -> Files.write(entry, otherEntry));
+        assertTrue(mentions(mixed.report(), "read from the mesh cache"), mixed.report().statistics().toString());
+        assertArrayEquals(reference.image(), mixed.image(), "the entry as it was when the scene was loaded");
+        assertEquals(List.of(), mixed.report().warnings());
+    }
+
+    /**
+     * Issue 25, item 13: a rewritten entry gets the umask's permissions, not those of what it
+     * replaces. Before, a mode-000 entry was rebuilt every run with mode 000 again (for anyone but
+     * root: a warning each time, never healing), and an entry that was a link to a world-writable
+     * file was rewritten world-writable.
+     */
+    @Test
+    void aRewrittenEntryHasTheUmasksPermissions() throws IOException, SceneException {
+        Path scene = scene("");
+        grid(6);
+        Run reference = run(scene, cache());
+        Path entry = entry();
+        Path fresh = dir.resolve("fresh");
+        Files.newOutputStream(fresh).close();
+        Set<PosixFilePermission> umask = Files.getPosixFilePermissions(fresh);
+        byte[] damaged = Files.readAllBytes(entry);
+        damaged[damaged.length / 2] ^= 1;
+        Files.write(entry, damaged);
+        Files.setPosixFilePermissions(entry, Set.of());
+        // root reads it anyway and finds the damage; anyone else cannot read it: either way it is rewritten
+        Run rebuilt = run(scene, cache());
+        assertArrayEquals(reference.image(), rebuilt.image());
+        assertEquals(umask, Files.getPosixFilePermissions(entry), "the umask's permissions, not 000");
+        // an entry that is a link to a world-writable file this test made
+        Path open = dir.resolve("open");
+        Files.write(open, damaged);
+        Files.setPosixFilePermissions(open, PosixFilePermissions.fromString("rw-rw-rw-"));
+        Files.delete(entry);
+        Files.createSymbolicLink(entry, open);
+        run(scene, cache());
+        assertFalse(Files.isSymbolicLink(entry), "the link is replaced by an entry of this program's own");
+        assertEquals(umask, Files.getPosixFilePermissions(entry));
+        assertArrayEquals(damaged, Files.readAllBytes(open), "the link's target is untouched");
     }
 
     @Test

@@ -172,7 +172,7 @@ class MeshReaderTest {
         obj.append("usemtl window\nf 9 10 11 12\n");
         Files.writeString(dir.resolve("m.obj"), obj);
         Path scene = Files.writeString(dir.resolve("s.yaml"), "objects:\n  - {type: mesh, file: m.obj}\n");
-        MeshCache cache = MeshCache.in(dir.resolve("cache"));
+        MeshCache cache = MeshCache.in(dir.resolve("cache"), Long.MAX_VALUE, 0);
         for (String load : new String[] {"parsed", "read from the mesh cache"}) {
             LoadedScene loaded = SceneLoader.load(scene, cache);
             loaded.world().prepare();

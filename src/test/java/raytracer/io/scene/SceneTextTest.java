@@ -6,11 +6,18 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.io.OutputStream;
 import java.io.StringReader;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.yaml.snakeyaml.LoaderOptions;
 import org.yaml.snakeyaml.error.Mark;
 import org.yaml.snakeyaml.error.MarkedYAMLException;
@@ -60,8 +67,51 @@ class SceneTextTest {
         String text = SPHERE + "#" + "x".repeat(SceneLoader.MAX_CHARACTERS - SPHERE.length());
         assertEquals(SceneLoader.MAX_CHARACTERS + 1, text.length());
         SceneException e = assertThrows(SceneException.class, () -> SceneLoader.load("huge.yaml", text));
-        assertEquals("huge.yaml: the scene file has 67108865 characters, more than the 67108864 a scene may hold "
+        assertEquals("huge.yaml: the scene file has more than the 67108864 characters a scene may hold "
                      + "(put large meshes in OBJ files)", e.getMessage());
+    }
+
+    /**
+     * A scene file that never ends (/dev/zero, only read here) or is longer than the limit through a
+     * pipe is read only up to the limit, then refused with it: before, /dev/zero was read for 17 s
+     * until the heap ran out (issue 25, item 3).
+     */
+    @Test
+    void aSceneThatNeverEndsStopsAtTheLimit(@TempDir Path dir) throws Exception {
+        SceneException zero = assertTimeoutPreemptively(Duration.ofSeconds(30),
+            () -> assertThrows(SceneException.class, () -> SceneLoader.load(Path.of("/dev/zero"))));
+        assertEquals("/dev/zero: the scene file has more than the 67108864 characters a scene may hold "
+                     + "(put large meshes in OBJ files)", zero.getMessage());
+        Path fifo = dir.resolve("scene.yaml");
+        assertEquals(0, new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor());
+        Thread writer = new Thread(() -> {
+            try (OutputStream out = Files.newOutputStream(fifo)) {
+                byte[] comment = ("#" + "x".repeat(1 << 16) + "\n").getBytes(StandardCharsets.US_ASCII);
+                for (int i = 0; i < 2000; i++) {
+                    out.write(comment);
+                }
+            } catch (IOException e) {
+                // the reader stopped at the limit and closed its end: the pipe is broken, as expected
+            }
+        }, "scene writer");
+        writer.setDaemon(true);
+        writer.start();
+        SceneException piped = assertTimeoutPreemptively(Duration.ofSeconds(30),
+            () -> assertThrows(SceneException.class, () -> SceneLoader.load(fifo)));
+        assertTrue(piped.getMessage().contains("more than the 67108864 characters"), piped.getMessage());
+        // a scene through a pipe within the limit is read as from a file
+        assertEquals(0, new ProcessBuilder("rm", fifo.toString()).start().waitFor());
+        assertEquals(0, new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor());
+        Thread small = new Thread(() -> {
+            try {
+                Files.writeString(fifo, SPHERE);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }, "scene writer");
+        small.setDaemon(true);
+        small.start();
+        assertEquals(1, assertTimeoutPreemptively(Duration.ofSeconds(30), () -> SceneLoader.load(fifo)).world().objects().size());
     }
 
     @Test

@@ -1,0 +1,143 @@
+package raytracer.io.scene;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import raytracer.accel.FlatBVH;
+import raytracer.accel.MedianSplitBuilder;
+import raytracer.accel.MeshBVH;
+import raytracer.accel.SahBuilder;
+import raytracer.core.Material;
+import raytracer.io.obj.ObjMaterial;
+import raytracer.io.obj.ObjModel;
+import raytracer.math.BBox;
+import raytracer.shapes.mesh.Mesh;
+
+/**
+ * One OBJ file with one set of options (smoothing, builder), as every mesh object of a scene that
+ * names them shares it: parsed or read from the mesh cache once, its BVH built once, its arrays
+ * held once (issue 25, item 4: 400 objects naming one 40k-triangle file each held their own copy,
+ * 1000 ran out of a 1 GiB heap). Each object puts its own materials and normal maps around the
+ * shared arrays ({@link MeshBVH#inLeafOrder}); objects that differ only by their transform share
+ * the object too ({@link MeshReader}), as instances of it.
+ */
+final class SharedMesh {
+    private final String name;
+    private final String builder;
+    private final LoadReport report;
+    /** The mesh's place in the cache, or null without one. */
+    private final MeshCache.Lookup lookup;
+    private final BBox bounds;
+    private final List<ObjMaterial> materials;
+    private final Set<Integer> sheets;
+    /** The parse, until the tree is built over it; null when the mesh came from the cache. */
+    private ObjModel model;
+    private final long parseNanos;
+    /** The cache entry as read at load, until it is taken; null when the mesh was parsed. */
+    private MeshCacheFile.Contents contents;
+    private final long readNanos;
+    /** The mesh in its tree's leaf order and the tree, once made. */
+    private Mesh mesh;
+    private FlatBVH bvh;
+
+    /** A mesh parsed now, to be built when the scene is prepared. */
+    SharedMesh(Path file, String builder, LoadReport report, MeshCache.Lookup lookup, ObjModel model, long parseNanos) {
+        this.name = file.getFileName().toString();
+        this.builder = builder;
+        this.report = report;
+        this.lookup = lookup;
+        this.model = model;
+        this.parseNanos = parseNanos;
+        this.readNanos = 0;
+        this.bounds = model.mesh().bounds();
+        this.materials = model.materials();
+        this.sheets = model.sheets();
+    }
+
+    /** A mesh read whole from the cache now (checked), to be taken when the scene is prepared. */
+    SharedMesh(Path file, String builder, LoadReport report, MeshCache.Lookup lookup, long readNanos) {
+        this.name = file.getFileName().toString();
+        this.builder = builder;
+        this.report = report;
+        this.lookup = lookup;
+        this.contents = lookup.take();
+        this.readNanos = readNanos;
+        this.parseNanos = 0;
+        MeshCacheFile.Header header = contents.header();
+        this.bounds = header.bounds();
+        this.materials = header.materials();
+        this.sheets = header.sheets();
+    }
+
+    String name() {
+        return name;
+    }
+
+    /** The box of the vertices, for the scene analysis before anything is built. */
+    BBox bounds() {
+        return bounds;
+    }
+
+    List<ObjMaterial> materials() {
+        return materials;
+    }
+
+    Set<Integer> sheets() {
+        return sheets;
+    }
+
+    /**
+     * The mesh object for one scene object: its materials around the shared arrays and tree,
+     * which the first call makes (reading them from the cache entry, or building the tree over
+     * the parse and caching both) and later calls reuse.
+     */
+    synchronized MeshBVH objectWith(List<Material> objectMaterials) {
+        if (mesh == null) {
+            if (contents != null) {
+                take();
+            } else {
+                build();
+            }
+        }
+        return MeshBVH.inLeafOrder(mesh, bvh, objectMaterials);
+    }
+
+    private void take() {
+        long start = System.nanoTime();
+        mesh = contents.mesh();
+        bvh = contents.bvh();
+        contents = null;
+        long took = readNanos + System.nanoTime() - start;
+        report.recordPrepareTiming("read " + name + " from the mesh cache", took);
+        report.addStatistic(String.format("mesh %s: read from the mesh cache in %.3f s (%s)", name, took / 1e9, lookup.file()));
+    }
+
+    /** Builds the tree over the parse (the time includes the triangles' boxes and renumbering them in leaf order), then caches both. */
+    private void build() {
+        long start = System.nanoTime();
+        bvh = builder.equals("median")
+            ? new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))
+            : new SahBuilder(MeshReader.SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(model.mesh()));
+        // renumbered in the tree's leaf order once, for every object that shares it
+        mesh = new MeshBVH(model.mesh(), bvh, List.of()).mesh();
+        long built = System.nanoTime() - start;
+        report.recordPrepareTiming(builder + " BVH of " + name + " (" + bvh.nodeCount() + " nodes)", built);
+        String cached = "";
+        if (lookup != null) {
+            long write = System.nanoTime();
+            MeshCache.Stored stored = lookup.store(model, mesh, bvh, report::addWarning);
+            if (stored.written()) {
+                long wrote = System.nanoTime() - write;
+                report.recordPrepareTiming("write " + name + " to the mesh cache", wrote);
+                cached = String.format(", written to the mesh cache in %.3f s", wrote / 1e9)
+                         + (stored.evicted() == 0 ? "" : " (" + stored.evicted() + " least recently used entr"
+                            + (stored.evicted() == 1 ? "y" : "ies") + " evicted to stay under the cache's cap)");
+            } else if (stored.whyNot() != null) {
+                cached = ", not cached (" + stored.whyNot() + ")";
+            }
+        }
+        report.addStatistic(String.format("mesh %s: parsed in %.3f s, %s BVH built in %.3f s%s", name, parseNanos / 1e9,
+                                          builder, built / 1e9, cached));
+        model = null; // the parse in file order is no longer needed: only the leaf order is kept
+    }
+}
