@@ -68,9 +68,9 @@ final class ConvergeCommand implements Callable<Integer> {
     List<Double> budgets = new ArrayList<>();
 
     @Option(names = "--config", paramLabel = "KEY=VALUE[,...]",
-            description = "A configuration (repeat for more): sampler=NAME (" + "regular, random, jittered, n-rooks, multi-jittered, "
-                          + "correlated-multi-jittered, hammersley, sobol), light-samples=N per area light, cutoff=C, label=TEXT; a/b in a value makes one "
-                          + "configuration per alternative. Default: the scene's own settings.")
+            description = "A configuration (repeat for more): sampler=NAME (a name --sampler takes), light-samples=N per "
+                          + "area light, cutoff=C, label=TEXT; a/b in a value makes one configuration per alternative. "
+                          + "Default: the scene's own settings.")
     List<String> configs = new ArrayList<>();
 
     @Option(names = "--reference", paramLabel = "REF",
