@@ -4,7 +4,7 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 
-/** A point light of intensity I: irradiance I cos(theta) / r^2, so L is I / r^2 (SPEC section 2). */
+/** A point light of intensity I: irradiance I cos(theta) / r^2, so L is I / r^2, as the renderer's PointLight. */
 record ImmutablePointLight(Point3D position, RGBColor intensity, boolean castsShadows) implements ImmutableLight {
 
     @Override
