@@ -180,8 +180,8 @@ final class ConvergeCommand implements Callable<Integer> {
         }
         PrintWriter out = spec.commandLine().getOut();
         out.print(ConvergeReport.table(rows));
-        ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
-            "slope of log error against log seconds, %s: %.2f%n", name, slope));
+        ConvergeReport.slopes(rows).forEach((name, slope) -> out.println(
+            "slope of log error against log seconds, " + name + ": " + slope.describe()));
         // the reference's noise is known in linear units only
         double noise = displayedMetric() ? Double.NaN : ref.noiseRmse();
         out.println("reference: " + ref.what() + ConvergeReport.noiseNote(noise, rows.get(0).error().referenceMean()));
