@@ -173,9 +173,10 @@ class DocsTest {
             if (parts.length > 1 && !Pattern.compile("\\b(class|record|enum|interface)\\s+" + simple + "\\b").matcher(text).find()) {
                 continue;
             }
-            boolean declared = Pattern.compile("[\\w>\\]]\\s+" + member + "\\s*\\(").matcher(text).find()      // a method
-                               || Pattern.compile("[\\w>\\]]\\s+" + member + "\\s*[=;]").matcher(text).find() // a field
-                               || Pattern.compile("(^|[\\s,(])" + member + "\\s*[(,;{}]").matcher(text).find() // an enum constant
+            // members of a top-level type are indented 4 spaces, of a nested one 8: a deeper match is a local variable
+            String indent = "(?m)^ {" + 4 * parts.length + "}";
+            boolean declared = Pattern.compile(indent + "(?:[\\w@<>\\[\\],.?]+ )*[\\w<>\\[\\],.?]+ " + member + "\\s*[(=;]").matcher(text).find()
+                               || Pattern.compile(indent + member + "\\b").matcher(text).find()     // an enum constant
                                || Pattern.compile("\\b(class|record|enum|interface)\\s+" + member + "\\b").matcher(text).find()
                                || Pattern.compile("record\\s+" + simple + "\\s*\\([^)]*\\b" + member + "\\s*[,)]").matcher(text).find();
             if (declared) {
