@@ -41,7 +41,22 @@ final class OptionChecks {
             throw new ParameterException(commandLine, "--width x --height is " + (long) o.width * o.height
                                                       + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
         }
-        Path out = o.output != null ? o.output : OutputFile.defaultFor(o.scene);
+        FrameRange frames = o.frames == null ? null : usage(() -> FrameRange.parse(o.frames));
+        String pattern = null;
+        if (frames == null && o.resume) {
+            throw new ParameterException(commandLine, "--resume is for --frames: it skips frames already written");
+        }
+        if (frames != null) {
+            if (o.repeat != 1) {
+                throw new ParameterException(commandLine, "--repeat is for a still; with --frames each frame is rendered once");
+            }
+            pattern = o.output != null ? o.output.toString() : FrameFiles.defaultPattern(o.scene);
+            String why = FrameFiles.whyNotPattern(pattern);
+            if (why != null) {
+                throw new ParameterException(commandLine, "-o " + pattern + " cannot name the frames: " + why);
+            }
+        }
+        Path out = frames != null ? FrameFiles.name(pattern, frames.first()) : o.output != null ? o.output : OutputFile.defaultFor(o.scene);
         String unwritable = OutputFile.whyUnwritable(out);
         if (unwritable != null) {
             // a bad -o is a bad option value, found before rendering, not after
@@ -73,7 +88,7 @@ final class OptionChecks {
             : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
         long meshCacheMax = cacheMax(o.cacheMax, System.getenv());
         return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
-                                 meshCache, meshCacheMax, o.show);
+                                 meshCache, meshCacheMax, o.show, frames, pattern, o.resume);
     }
 
     /**

@@ -98,6 +98,15 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
     boolean noCache;
 
+    @Option(names = "--frames", paramLabel = "A-B",
+            description = "Render frames A to B of the scene's animation (or one frame, A) in this JVM, the scene read once; "
+                          + "-o is then a pattern with %%d or %%04d for the frame number. Default output: <scene name>-%%04d.png.")
+    String frames;
+
+    @Option(names = "--resume",
+            description = "With --frames: skip the frames whose file is already complete (an interrupted animation goes on).")
+    boolean resume;
+
     @Option(names = "--repeat", paramLabel = "N",
             description = "Render N times in this JVM and report each (benchmarking: the first render includes JIT warm-up).")
     int repeat = 1;

@@ -3,7 +3,10 @@ package raytracer.cli;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
@@ -18,7 +21,7 @@ import raytracer.image.ImageWriters;
 import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.MeshCache;
 import raytracer.io.scene.SceneException;
-import raytracer.io.scene.SceneLoader;
+import raytracer.io.scene.SceneFile;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
 import raytracer.render.SceneAnalysis;
@@ -27,10 +30,11 @@ import raytracer.render.Workers;
 import raytracer.tracers.BvhCost;
 
 /**
- * One run of the command, on one pool of --threads workers: loads the scene and prepares it on the
- * pool (so that the OBJ parse and the BVH builds fork onto its workers), applies the command-line
- * overrides, renders --repeat times with a progress bar (and with --show a {@link ShowWindow}), and
- * writes the image atomically. {@link RunReport} prints what it did.
+ * One run of the command, on one pool of --threads workers: reads the scene file once, then for
+ * the still (or each frame of --frames) loads the world and prepares it on the pool (so that the
+ * OBJ parse and the BVH builds fork onto its workers), applies the command-line overrides, renders
+ * --repeat times with a progress bar (and with --show a {@link ShowWindow}), and writes the image
+ * atomically. {@link RunReport} prints what it did.
  */
 final class RenderRun {
     static final String DEFAULT_SCENE_RESOURCE = "/raytracer/scenes/default.yaml";
@@ -40,6 +44,14 @@ final class RenderRun {
     /** The terminal's progress bar while the last render runs, for a cancel from the window to clear. */
     private volatile Progress progress;
     private final CommandLine commandLine;
+    /** The warnings printed so far: each once, however many frames find it. */
+    private final Set<String> printedWarnings = new HashSet<>();
+    /** The film every frame is rendered into, and the --show window on it (null without). */
+    private Film film;
+    private ShowWindow window;
+    /** The frame being rendered and its file, for the window's progress and a cancel's message. */
+    private volatile Renderer renderer;
+    private volatile Path current;
 
     RenderRun(RenderRequest request, CommandLine commandLine) {
         this.request = request;
@@ -49,75 +61,126 @@ final class RenderRun {
 
     int run() throws Exception {
         try (Workers workers = new Workers(request.threads())) {
-            long loadStart = System.nanoTime();
-            LoadedScene loaded = workers.call(this::loadScene);
-            long loadNanos = System.nanoTime() - loadStart;
-            String input = OutputFile.whyInput(request.output(), request.scene(), loaded.report().inputs());
-            if (input != null) {
-                // found after loading, which names the inputs, and before rendering
-                throw new ParameterException(commandLine, "cannot write " + request.output() + ": " + input);
-            }
-            int warned = loaded.report().warnings().size();
-            if (!request.quiet()) {
-                report.warnings(loaded.report().warnings());
-            }
-            World world = loaded.world();
-            request.overrides().applyTo(world);
-            RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
-            DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
-            long prepareStart = System.nanoTime();
-            // the cost view shows the search structure as the scene gives it, and --no-skip renders the
-            // scene as given: without the analysis nothing is left out (the image is the same; --no-skip checks it)
-            SceneAnalysis analysis = request.costView() || !request.analyse() ? null : SceneAnalysis.apply(world, rayTree);
-            workers.call(() -> {
-                world.prepare(objects -> Aggregation.organize(objects, request.accel()));
-                return null;
-            });
-            long prepareNanos = System.nanoTime() - prepareStart;
-            if (!request.quiet()) {
-                // what preparing found: a cache entry that failed its checksum, one that could not be written
-                List<String> warnings = loaded.report().warnings();
-                report.warnings(warnings.subList(warned, warnings.size()));
-            }
-            if (request.costView()) {
-                world.setTracer(BvhCost::new);
-                // counts per pixel, not averages blurred over the neighbours
-                world.setViewPlane(world.viewPlane().withFilter(PixelFilter.BOX));
-            }
-            ViewPlane vp = world.viewPlane();
-            Film film = new Film(vp.hres(), vp.vres());
-            // the file's codes: the cost view's false colour is written at exposure 1 through the sRGB curve
-            double exposure = request.costView() ? 1 : vp.exposure();
-            boolean srgb = request.costView() || encoding.srgbCurve();
-            Renderer renderer = new Renderer(world, rayTree, workers, request.seed());
-            // the window's type is named only here, so that without --show no AWT class is loaded
-            try (ShowWindow window = request.show() ? openWindow(renderer, film, exposure, srgb) : null) {
-                RenderStats stats = render(renderer, film, window);
-                Film written = write(film, vp, exposure, srgb);
-                report.droppedSamples(stats);
-                if (window != null) {
-                    window.finish(written);
+            long readStart = System.nanoTime();
+            SceneFile file = workers.call(this::readScene);
+            long readNanos = System.nanoTime() - readStart;
+            FrameRange range = request.frames() == null ? new FrameRange(0, 0) : request.frames();
+            if (request.frames() != null) {
+                String why = range.whyNotIn(file.frames(), file.animated());
+                if (why != null) {
+                    throw new ParameterException(commandLine, "--frames " + range.first() + "-" + range.last() + ": " + why);
                 }
-                if (!request.quiet()) {
-                    report.summary(stats, request.output(), vp.filter());
-                }
-                if (request.stats()) {
-                    report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
-                    report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
-                        : "--no-skip: the scene analysis was off, the scene rendered as given");
+            }
+            long start = System.nanoTime();
+            int rendered = 0;
+            try {
+                for (int frame = range.first(); frame <= range.last(); frame++) {
+                    Path out = request.output(frame);
+                    if (request.resume() && FrameFiles.complete(out)) {
+                        continue;
+                    }
+                    renderFrame(file, frame, out, workers, rendered == 0 ? readNanos : 0, frame == range.last());
+                    rendered++;
                 }
                 if (window != null) {
                     window.awaitClose();
                 }
+            } finally {
+                if (window != null) {
+                    window.close();
+                }
+            }
+            if (request.frames() != null && !request.quiet()) {
+                report.animation(file.name(), range, rendered, readNanos, System.nanoTime() - start);
             }
             return 0;
         }
     }
 
-    /** The --show window on {@code film}, coding pixels as the file will. */
-    private ShowWindow openWindow(Renderer renderer, Film film, double exposure, boolean srgb) throws Exception {
+    /**
+     * Loads, prepares, renders and writes frame {@code frame} of {@code file} to {@code out};
+     * {@code readNanos} is the time reading the file took, counted in the first frame's load.
+     */
+    private void renderFrame(SceneFile file, int frame, Path out, Workers workers, long readNanos, boolean last) throws Exception {
+        current = out;
+        long loadStart = System.nanoTime();
+        LoadedScene loaded = workers.call(() -> file.load(frame));
+        long loadNanos = readNanos + System.nanoTime() - loadStart;
+        String input = OutputFile.whyInput(out, request.scene(), loaded.report().inputs());
+        if (input != null) {
+            // found after loading, which names the inputs, and before rendering
+            throw new ParameterException(commandLine, "cannot write " + out + ": " + input);
+        }
+        int warned = loaded.report().warnings().size();
+        warnings(loaded.report().warnings());
+        World world = loaded.world();
+        request.overrides().applyTo(world);
+        RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
+        DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
+        long prepareStart = System.nanoTime();
+        // the cost view shows the search structure as the scene gives it, and --no-skip renders the
+        // scene as given: without the analysis nothing is left out (the image is the same; --no-skip checks it)
+        SceneAnalysis analysis = request.costView() || !request.analyse() ? null : SceneAnalysis.apply(world, rayTree);
+        workers.call(() -> {
+            world.prepare(objects -> Aggregation.organize(objects, request.accel()));
+            return null;
+        });
+        long prepareNanos = System.nanoTime() - prepareStart;
+        // what preparing found: a cache entry that failed its checksum, one that could not be written
+        List<String> warnings = loaded.report().warnings();
+        warnings(warnings.subList(warned, warnings.size()));
+        if (request.costView()) {
+            world.setTracer(BvhCost::new);
+            // counts per pixel, not averages blurred over the neighbours
+            world.setViewPlane(world.viewPlane().withFilter(PixelFilter.BOX));
+        }
+        ViewPlane vp = world.viewPlane();
+        // every frame has the same size: one film, which the --show window shows frame after frame
+        if (film == null) {
+            film = new Film(vp.hres(), vp.vres());
+        }
+        // the file's codes: the cost view's false colour is written at exposure 1 through the sRGB curve
+        double exposure = request.costView() ? 1 : vp.exposure();
+        boolean srgb = request.costView() || encoding.srgbCurve();
+        Renderer renderer = new Renderer(world, rayTree, workers, request.seed());
+        this.renderer = renderer;
+        String label = request.frames() == null ? "" : "frame " + frame;
+        if (request.show()) {
+            // the window's type is named only here, so that without --show no AWT class is loaded
+            if (window == null) {
+                window = openWindow(film, exposure, srgb);
+            }
+            window.startFrame(label);
+        }
+        RenderStats stats = render(renderer, film, window, label);
+        Film written = write(film, vp, exposure, srgb, out);
+        report.droppedSamples(stats);
+        if (window != null && last) {
+            window.finish(written);
+        }
+        if (!request.quiet()) {
+            report.summary(stats, out, vp.filter());
+        }
+        if (request.stats()) {
+            report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
+            report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
+                : "--no-skip: the scene analysis was off, the scene rendered as given");
+        }
+    }
+
+    /** Prints the warnings not printed before (the frames of an animation find the same ones); none with --quiet. */
+    private void warnings(List<String> found) {
+        if (request.quiet()) {
+            return;
+        }
+        List<String> fresh = found.stream().filter(printedWarnings::add).toList();
+        report.warnings(fresh);
+    }
+
+    /** The --show window on {@code film}, coding pixels as the file will, telling the progress of the frame being rendered. */
+    private ShowWindow openWindow(Film film, double exposure, boolean srgb) throws Exception {
         String scene = request.scene() == null ? "default scene" : request.scene().getFileName().toString();
-        return ShowWindow.open(scene, film, request.costView(), exposure, srgb, renderer::progress, this::cancel);
+        return ShowWindow.open(scene, film, request.costView(), exposure, srgb, () -> renderer.progress(), this::cancel);
     }
 
     /**
@@ -131,22 +194,23 @@ final class RenderRun {
             bar.close();
         }
         if (!request.quiet()) {
-            report.cancelled(request.output());
+            report.cancelled(current);
         }
         Runtime.getRuntime().exit(ErrorReport.INTERRUPTED);
     }
 
     /**
      * Renders into {@code film}, after --repeat - 1 renders of the same frame that only report; the
-     * last render tells {@code preview} (if not null) of each finished tile.
+     * last render tells {@code preview} (if not null) of each finished tile. {@code label} names
+     * the frame on the progress bar.
      */
-    private RenderStats render(Renderer renderer, Film film, TileListener preview) {
+    private RenderStats render(Renderer renderer, Film film, TileListener preview, String label) {
         for (int i = 1; i < request.repeat(); i++) {
             report.repeat(i, renderer.render(new Film(film.width(), film.height())));
         }
         RenderStats stats;
         if (!request.quiet() && System.console() != null) {
-            progress = new Progress(System.err, renderer::progress);
+            progress = new Progress(System.err, label, renderer::progress);
             try {
                 stats = renderer.render(film, preview);
             } finally {
@@ -166,7 +230,7 @@ final class RenderRun {
      * Writes the shaded image, or the cost view's false colour with its legend; returns the film
      * written (the false colour's, or {@code film}).
      */
-    private Film write(Film film, ViewPlane vp, double exposure, boolean srgb) throws IOException {
+    private Film write(Film film, ViewPlane vp, double exposure, boolean srgb, Path out) throws IOException {
         Film written = film;
         if (request.costView()) {
             // the film holds each pixel's mean over its samples
@@ -174,19 +238,20 @@ final class RenderRun {
             report.costLegend(range, vp.numSamples());
             written = FalseColor.apply(film, range[0], range[1]);
         }
-        ImageWriters.write(written, exposure, srgb, request.output());
+        ImageWriters.write(written, exposure, srgb, out);
         return written;
     }
 
-    private LoadedScene loadScene() throws SceneException, IOException {
+    /** The scene file, read once for every frame. */
+    private SceneFile readScene() throws SceneException, IOException {
         if (request.scene() != null) {
-            return SceneLoader.load(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache(), request.meshCacheMax()));
+            return SceneFile.read(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache(), request.meshCacheMax()));
         }
         try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
             if (in == null) {
                 throw new IOException("the embedded default scene is missing from the jar");
             }
-            return SceneLoader.load("default scene", new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            return SceneFile.of("default scene", new String(in.readAllBytes(), StandardCharsets.UTF_8));
         }
     }
 }

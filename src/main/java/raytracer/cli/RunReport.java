@@ -43,6 +43,17 @@ final class RunReport {
                    range[0], range[1], samples == 1 ? "pixel" : "ray, averaged over each pixel");
     }
 
+    /**
+     * The end of --frames: how many frames were rendered and how many were already complete, the
+     * wall time, and the scene file's one read apart from the frames' time.
+     */
+    void animation(String scene, FrameRange range, int rendered, long readNanos, long framesNanos) {
+        int skipped = range.count() - rendered;
+        err.printf("render: frames %d-%d of %s: %d rendered%s in %.2f s (%.2f s a frame), the scene file read once in %.3f s%n",
+                   range.first(), range.last(), scene, rendered, skipped == 0 ? "" : ", " + skipped + " already complete (--resume)",
+                   framesNanos / 1e9, rendered == 0 ? 0 : framesNanos / 1e9 / rendered, readNanos / 1e9);
+    }
+
     /** A render cancelled from the --show window; whatever {@code out} held before is kept. */
     void cancelled(Path out) {
         err.println("render: cancelled from the window; " + out + " left as it was");

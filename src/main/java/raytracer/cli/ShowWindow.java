@@ -30,8 +30,9 @@ import raytracer.render.TileListener;
  * The {@code --show} window: the image as its tiles finish, then the final image until Esc or the
  * close button. The workers only queue each finished tile ({@link #tileDone}); a Swing timer on the
  * event thread takes the queue at most {@link #REPAINT_MILLIS} apart, codes those tiles' pixels and
- * repaints them, so the render pays one queue entry per tile. Esc or closing the window before
- * {@link #finish} cancels the run through {@code cancel}; after it, closes the window.
+ * repaints them, so the render pays one queue entry per tile. The frames of an animation are
+ * rendered into the same film and shown one after another ({@link #startFrame}). Esc or closing
+ * the window before {@link #finish} cancels the run through {@code cancel}; after it, closes the window.
  */
 final class ShowWindow implements TileListener, AutoCloseable {
     /** At most ten repaints a second: smooth enough to watch, and nothing a render could measure. */
@@ -47,6 +48,8 @@ final class ShowWindow implements TileListener, AutoCloseable {
     private final Queue<int[]> finished = new ConcurrentLinkedQueue<>();
     private final CountDownLatch closed = new CountDownLatch(1);
     private final long start = System.nanoTime();
+    /** The frame being shown ("frame 12"), empty for a still. */
+    private volatile String frameLabel = "";
 
     // the event thread's alone
     private final List<int[]> shownTiles = new ArrayList<>();
@@ -108,6 +111,15 @@ final class ShowWindow implements TileListener, AutoCloseable {
         timer.start();
     }
 
+    /**
+     * A new frame is about to be rendered into the film: its tiles replace the last frame's as
+     * they finish, and the title names it ({@code label}: "frame 12").
+     */
+    void startFrame(String label) {
+        frameLabel = label.isEmpty() ? "" : " " + label;
+        SwingUtilities.invokeLater(shownTiles::clear);
+    }
+
     /** On a worker: queue the tile for the event thread. */
     @Override
     public void tileDone(int x0, int y0, int x1, int y1) {
@@ -143,7 +155,7 @@ final class ShowWindow implements TileListener, AutoCloseable {
             double f = progress.getAsDouble();
             double seconds = (now - start) / 1e9;
             String left = f > 0.01 ? Progress.formatSeconds(seconds * (1 - f) / f) + " left" : "time left unknown";
-            frame.setTitle(String.format("%s: %.0f%%, %s", scene, 100 * f, left));
+            frame.setTitle(String.format("%s%s: %.0f%%, %s", scene, frameLabel, 100 * f, left));
         }
     }
 

@@ -177,6 +177,26 @@ class ShowWindowTest {
         assertShows(pixels(out), 160, 100, shot, kind);
     }
 
+    /** With --frames the window shows each frame in turn, in the one film, and ends on the last frame's file. */
+    @Test
+    void theFramesOfAnAnimationEndOnTheLastFrame() throws Exception {
+        Path scene = Files.writeString(dir.resolve("spin.yaml"), """
+            image: {width: 96, height: 64, samples: 4}
+            lights:
+              - {type: point, position: [2, 6, 4], intensity: 60}
+            objects:
+              - {type: plane, normal: [0, 1, 0]}
+              - {type: box, name: crate, min: [-0.5, 0, -0.5], max: [0.5, 1, 0.5]}
+            animation: {frames: 3, objects: {crate: {keys: [{frame: 0, rotate-y: 0}, {frame: 3, rotate-y: 90}]}}}
+            """);
+        Path shot = dir.resolve("frames-window.png");
+        Run run = capture(largeDisplay, "capture", shot, scene.toString(), "--frames", "0-2", "-o", dir.resolve("f-%d.png").toString(),
+                          "--show");
+        assertEquals(0, run.status(), run.err());
+        assertTrue(run.err().contains("frames 0-2 of " + scene + ": 3 rendered"), run.err());
+        assertShows(pixels(dir.resolve("f-2.png")), 96, 64, shot, "frames");
+    }
+
     @Test
     void anImageLargerThanTheScreenIsShownReduced() throws Exception {
         Path out = dir.resolve("large.png");

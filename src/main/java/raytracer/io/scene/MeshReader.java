@@ -42,8 +42,11 @@ final class MeshReader {
     static final int SAH_MAX_LEAF_SIZE = 4;
 
     private final MeshCache cache;
-    /** Per OBJ file and options: the one parse (or cache entry) and tree every object naming them shares. */
-    private final Map<String, SharedMesh> shared = new HashMap<>();
+    /**
+     * Per OBJ file and options: the one parse (or cache entry) and tree every object naming them
+     * shares, in every frame of an animation ({@link SceneFile} keeps it from frame to frame).
+     */
+    private final Map<String, SharedMesh> shared;
     /** How many objects name each shared mesh, in the order first named. */
     private final Map<SharedMesh, Integer> users = new LinkedHashMap<>();
     /** Objects that differ only by their transform: one object, instanced. */
@@ -55,15 +58,22 @@ final class MeshReader {
 
     /** The mesh objects of one scene, read from {@code cache} when it has them (null: no cache). */
     MeshReader(MeshCache cache) {
+        this(cache, new HashMap<>());
+    }
+
+    /** The same, sharing the meshes that {@code shared} holds and adding those it reads to it. */
+    MeshReader(MeshCache cache, Map<String, SharedMesh> shared) {
         this.cache = cache;
+        this.shared = shared;
     }
 
     /**
      * A {@code mesh} object: its OBJ file parsed, or read from the cache, once per file and options
      * for the whole scene; an object that differs from an earlier one only by its transform (which
-     * the caller wraps around it) is that earlier object.
+     * the caller wraps around it: {@code transformed}) is that earlier object.
      */
-    GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures) throws SceneException {
+    GeometricObject read(YamlObject o, Material override, LoadReport report, TextureReader textures, boolean transformed)
+            throws SceneException {
         Path file = o.path("file");
         boolean smooth = o.bool("smooth", false);
         String builder = o.string("bvh", "median");
@@ -78,15 +88,17 @@ final class MeshReader {
         if (mesh == null) {
             mesh = load(o, file, smooth, builder, options, report);
             shared.put(key, mesh);
+        } else {
+            mesh.inputs().forEach(report::addInput);
         }
         users.merge(mesh, 1, Integer::sum);
         ObjectKey objectKey = new ObjectKey(mesh, override, normalMapKey(o), o.bool("casts-shadows", true));
         PendingMesh same = objects.get(objectKey);
-        if (same != null && o.has("transform")) {
+        if (same != null && transformed) {
             return same;
         }
         PendingMesh object = object(o, mesh, override, report, textures);
-        if (o.has("transform")) {
+        if (transformed) {
             objects.put(objectKey, object);
         }
         return object;
@@ -108,8 +120,10 @@ final class MeshReader {
         MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
         if (cached != null) {
             report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
-            cached.libraries().forEach(library -> report.addInput(file.toAbsolutePath().getParent().resolve(library.path())));
-            return new SharedMesh(file, builder, report, lookup, readNanos);
+            List<Path> inputs = new ArrayList<>(List.of(file));
+            cached.libraries().forEach(library -> inputs.add(file.toAbsolutePath().getParent().resolve(library.path())));
+            inputs.forEach(report::addInput);
+            return new SharedMesh(file, builder, lookup, readNanos, inputs);
         }
         long start = System.nanoTime();
         ObjModel model = parse(o, file, smooth);
@@ -119,7 +133,9 @@ final class MeshReader {
         report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
                                       model.faces()));
         model.libraries().forEach(report::addInput);
-        return new SharedMesh(file, builder, report, lookup, model, parseNanos);
+        List<Path> inputs = new ArrayList<>(List.of(file));
+        inputs.addAll(model.libraries());
+        return new SharedMesh(file, builder, lookup, model, parseNanos, inputs);
     }
 
     /** One scene object around the shared mesh: its materials (the MTL's unless it names one) and normal maps. */
@@ -134,7 +150,7 @@ final class MeshReader {
         }
         List<NormalMap> maps = normalMaps(o, objMaterials, textures, report);
         PendingMesh object = new PendingMesh("mesh " + mesh.name(), mesh.bounds(), materials, () -> {
-            MeshBVH made = mesh.objectWith(materials);
+            MeshBVH made = mesh.objectWith(materials, report);
             for (NormalMap map : maps) {
                 made.triangles().setNormalMap(map.id(), map.texture(), map.tangent());
             }

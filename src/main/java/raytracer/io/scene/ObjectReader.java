@@ -5,7 +5,11 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
+import org.yaml.snakeyaml.nodes.MappingNode;
 import org.yaml.snakeyaml.nodes.Node;
+import org.yaml.snakeyaml.nodes.NodeTuple;
+import org.yaml.snakeyaml.nodes.ScalarNode;
+import org.yaml.snakeyaml.nodes.Tag;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.math.Matrix4;
@@ -19,9 +23,12 @@ import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.Triangle;
 
-/** One entry of the {@code objects} list: a shape, its material and an optional transform. */
+/**
+ * One entry of the {@code objects} list: a shape, its material, an optional transform, and an
+ * optional name by which an animation moves it.
+ */
 final class ObjectReader {
-    private static final Set<String> COMMON = Set.of("type", "material", "transform", "casts-shadows");
+    private static final Set<String> COMMON = Set.of("type", "name", "material", "transform", "casts-shadows");
     private static final Map<String, Set<String>> KEYS = Map.of(
         "sphere", Set.of("center", "radius"),
         "plane", Set.of("point", "normal"),
@@ -33,8 +40,14 @@ final class ObjectReader {
     private ObjectReader() {
     }
 
+    /**
+     * The object of {@code node}; {@code motion}, when not null, is the animation's transform of it
+     * at this frame, applied after its own ({@code motionNode} and {@code when} place a message
+     * about it: " at frame 12").
+     */
     static GeometricObject read(Source source, Node node, Map<String, Material> materials, LoadReport report,
-                                TextureReader textures, MeshReader meshes) throws SceneException {
+                                TextureReader textures, MeshReader meshes, Matrix4 motion, Node motionNode, String when)
+            throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
         Set<String> specific = KEYS.get(kind);
         if (specific == null) {
@@ -46,7 +59,8 @@ final class ObjectReader {
         YamlObject o = new YamlObject(source, node, kind, allowed);
         GeometricObject shape;
         if (kind.equals("mesh")) {
-            shape = meshes.read(o, o.has("material") ? material(o, materials) : null, report, textures);
+            shape = meshes.read(o, o.has("material") ? material(o, materials) : null, report, textures,
+                                o.has("transform") || motion != null);
         } else {
             try {
                 shape = shape(kind, o);
@@ -56,17 +70,41 @@ final class ObjectReader {
             shape.setMaterial(material(o, materials));
         }
         shape.setCastsShadows(o.bool("casts-shadows", true));
-        if (!o.has("transform")) {
+        if (!o.has("transform") && motion == null) {
             return shape;
+        }
+        Matrix4 m = o.has("transform") ? TransformReader.read(source, o.raw("transform")) : Matrix4.IDENTITY;
+        Node where = o.has("transform") ? o.raw("transform") : node;
+        if (motion != null) {
+            m = TransformReader.checked(source, motionNode, motion.multiply(m), when);
+            where = motionNode;
         }
         Instance instance;
         try {
-            instance = new Instance(shape, TransformReader.read(source, o.raw("transform")));
+            instance = new Instance(shape, m);
         } catch (IllegalArgumentException e) {
-            throw source.error(o.raw("transform"), e.getMessage());
+            throw source.error(where, e.getMessage());
         }
         instance.setCastsShadows(shape.castsShadows());
         return instance;
+    }
+
+    /** The object's {@code name}, or null when it has none; read before the object, to check the animation's names. */
+    static String name(Source source, Node node) throws SceneException {
+        if (!(node instanceof MappingNode mapping)) {
+            return null;
+        }
+        for (NodeTuple tuple : mapping.getValue()) {
+            if (tuple.getKeyNode() instanceof ScalarNode key && key.getValue().equals("name")) {
+                if (!(tuple.getValueNode() instanceof ScalarNode value)
+                    || value.getTag().equals(Tag.NULL)) {
+                    throw source.error(tuple.getValueNode(), "'name' of an object must be a single value, got "
+                                       + YamlObject.describe(tuple.getValueNode()));
+                }
+                return value.getValue();
+            }
+        }
+        return null;
     }
 
     private static GeometricObject shape(String kind, YamlObject o) throws SceneException {

@@ -12,7 +12,6 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
@@ -25,13 +24,11 @@ import org.yaml.snakeyaml.error.YAMLException;
 import org.yaml.snakeyaml.nodes.Node;
 import org.yaml.snakeyaml.parser.ParserImpl;
 import org.yaml.snakeyaml.resolver.Resolver;
-import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
-import raytracer.core.ShadingPass;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
@@ -48,12 +45,13 @@ import raytracer.tracers.Whitted;
 
 /**
  * Reads a scene file into a {@link LoadedScene}: the {@link World}, the render settings the file
- * gives and the report of the loading. Every problem becomes a {@link SceneException} naming file,
- * line and column.
+ * gives and the report of the loading; of an animation, its first frame ({@link SceneFile} loads
+ * any frame). Every problem becomes a {@link SceneException} naming file, line and column.
  */
 public final class SceneLoader {
     static final Set<String> SECTIONS =
-        Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
+        Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects",
+               "animation");
     static final double AMBIENT_RADIANCE = 0.1;
     static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding",
                                                 "filter", "filter-stddev");
@@ -147,51 +145,7 @@ public final class SceneLoader {
     }
 
     static LoadedScene load(Source source, String text, OptionalInt areaLightSamples, MeshCache cache) throws SceneException {
-        Node root = root(source, text);
-        YamlObject scene = new YamlObject(source, root, "the scene", SECTIONS);
-        ViewPlane vp = readImage(source, scene);
-        Camera camera = scene.has("camera") ? CameraReader.read(source, scene.raw("camera")) : CameraReader.defaultCamera();
-        World world = new World(vp, camera, readAmbient(source, scene));
-        RayTreeSettings rayTree = RayTreeSettings.FULL_TREE.withCutoff(readCutoff(source, scene));
-        DisplayEncoding encoding = readEncoding(source, scene);
-        LoadReport report = new LoadReport();
-        TextureReader textures = new TextureReader(source, report);
-        world.setBackground(scene.color("background", RGBColor.BLACK));
-        if (scene.has("environment")) {
-            world.setBackground(textures.environment(scene.raw("environment"), "environment"));
-            if (scene.has("background")) {
-                report.addWarning(source.at(scene.raw("background")) + ": 'background' is not used: the 'environment' map is "
-                                  + "what rays that miss every object see");
-            }
-        }
-        if (scene.has("pass")) {
-            try {
-                rayTree = rayTree.withPass(ShadingPass.parse(scene.requiredString("pass")));
-            } catch (IllegalArgumentException e) {
-                throw source.error(scene.raw("pass"), e.getMessage());
-            }
-        }
-        Map<String, Material> materials = readMaterials(source, scene, textures);
-        boolean areaLights = false;
-        for (Node node : scene.list("lights")) {
-            Light light = LightReader.read(source, node, world, areaLightSamples);
-            areaLights |= light.hasExtent();
-            world.addLight(light);
-        }
-        world.setTracer(readTracer(source, scene, areaLights));
-        if (!scene.has("objects")) {
-            throw source.error(root, "the scene has no 'objects' list");
-        }
-        List<Node> objects = scene.list("objects");
-        if (objects.isEmpty()) {
-            report.addWarning(source.at(scene.raw("objects")) + ": the scene has no objects; the image shows only the background");
-        }
-        MeshReader meshes = new MeshReader(cache);
-        for (Node object : objects) {
-            world.addObject(ObjectReader.read(source, object, materials, report, textures, meshes));
-        }
-        meshes.reportSharing(report);
-        return new LoadedScene(world, rayTree, encoding, report);
+        return SceneFile.of(source, text, areaLightSamples, cache).load(0);
     }
 
     /** The YAML node tree of a scene's text; an empty text is an error. */
@@ -244,7 +198,7 @@ public final class SceneLoader {
         return "syntax error: " + m;
     }
 
-    private static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
+    static ViewPlane readImage(Source source, YamlObject scene) throws SceneException {
         YamlObject image = scene.has("image")
             ? new YamlObject(source, scene.raw("image"), "image", IMAGE_KEYS)
             : null;
@@ -292,7 +246,7 @@ public final class SceneLoader {
      * ray-cast. Whitted and ray-cast take each light from one direction, so they are refused for a
      * scene with area lights rather than render it without them.
      */
-    private static Function<World, Tracer> readTracer(Source source, YamlObject scene, boolean areaLights)
+    static Function<World, Tracer> readTracer(Source source, YamlObject scene, boolean areaLights)
             throws SceneException {
         String name = scene.string("tracer", areaLights ? "area-lighting" : "whitted");
         Function<World, Tracer> tracer = switch (name) {
@@ -309,7 +263,7 @@ public final class SceneLoader {
         return tracer;
     }
 
-    private static double readCutoff(Source source, YamlObject scene) throws SceneException {
+    static double readCutoff(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("image")) {
             return 0;
         }
@@ -321,7 +275,7 @@ public final class SceneLoader {
         return cutoff;
     }
 
-    private static DisplayEncoding readEncoding(Source source, YamlObject scene) throws SceneException {
+    static DisplayEncoding readEncoding(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("image")) {
             return DisplayEncoding.SRGB;
         }
@@ -334,7 +288,7 @@ public final class SceneLoader {
         return named.get();
     }
 
-    private static Light readAmbient(Source source, YamlObject scene) throws SceneException {
+    static Light readAmbient(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("ambient")) {
             return new Ambient(AMBIENT_RADIANCE, RGBColor.WHITE);
         }
@@ -345,7 +299,7 @@ public final class SceneLoader {
         return new Ambient(radiance, color);
     }
 
-    private static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)
+    static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)
             throws SceneException {
         Map<String, Material> materials = new LinkedHashMap<>();
         if (!scene.has("materials")) {

@@ -19,12 +19,14 @@ import raytracer.shapes.mesh.Mesh;
  * held once (issue 25, item 4: 400 objects naming one 40k-triangle file each held their own copy,
  * 1000 ran out of a 1 GiB heap). Each object puts its own materials and normal maps around the
  * shared arrays ({@link MeshBVH#inLeafOrder}); objects that differ only by their transform share
- * the object too ({@link MeshReader}), as instances of it.
+ * the object too ({@link MeshReader}), as instances of it. The frames of an animation share it as
+ * well ({@link SceneFile}): what it reads and builds is reported to the frame that first needs it.
  */
 final class SharedMesh {
     private final String name;
     private final String builder;
-    private final LoadReport report;
+    /** The mesh file and the files it names (material libraries), which every scene using it reads. */
+    private final List<Path> inputs;
     /** The mesh's place in the cache, or null without one. */
     private final MeshCache.Lookup lookup;
     private final BBox bounds;
@@ -41,10 +43,10 @@ final class SharedMesh {
     private FlatBVH bvh;
 
     /** A mesh parsed now, to be built when the scene is prepared. */
-    SharedMesh(Path file, String builder, LoadReport report, MeshCache.Lookup lookup, ObjModel model, long parseNanos) {
+    SharedMesh(Path file, String builder, MeshCache.Lookup lookup, ObjModel model, long parseNanos, List<Path> inputs) {
         this.name = file.getFileName().toString();
         this.builder = builder;
-        this.report = report;
+        this.inputs = List.copyOf(inputs);
         this.lookup = lookup;
         this.model = model;
         this.parseNanos = parseNanos;
@@ -55,10 +57,10 @@ final class SharedMesh {
     }
 
     /** A mesh read whole from the cache now (checked), to be taken when the scene is prepared. */
-    SharedMesh(Path file, String builder, LoadReport report, MeshCache.Lookup lookup, long readNanos) {
+    SharedMesh(Path file, String builder, MeshCache.Lookup lookup, long readNanos, List<Path> inputs) {
         this.name = file.getFileName().toString();
         this.builder = builder;
-        this.report = report;
+        this.inputs = List.copyOf(inputs);
         this.lookup = lookup;
         this.contents = lookup.take();
         this.readNanos = readNanos;
@@ -71,6 +73,10 @@ final class SharedMesh {
 
     String name() {
         return name;
+    }
+
+    List<Path> inputs() {
+        return inputs;
     }
 
     /** The box of the vertices, for the scene analysis before anything is built. */
@@ -89,20 +95,20 @@ final class SharedMesh {
     /**
      * The mesh object for one scene object: its materials around the shared arrays and tree,
      * which the first call makes (reading them from the cache entry, or building the tree over
-     * the parse and caching both) and later calls reuse.
+     * the parse and caching both, and telling {@code report} so) and later calls reuse.
      */
-    synchronized MeshBVH objectWith(List<Material> objectMaterials) {
+    synchronized MeshBVH objectWith(List<Material> objectMaterials, LoadReport report) {
         if (mesh == null) {
             if (contents != null) {
-                take();
+                take(report);
             } else {
-                build();
+                build(report);
             }
         }
         return MeshBVH.inLeafOrder(mesh, bvh, objectMaterials);
     }
 
-    private void take() {
+    private void take(LoadReport report) {
         long start = System.nanoTime();
         mesh = contents.mesh();
         bvh = contents.bvh();
@@ -113,7 +119,7 @@ final class SharedMesh {
     }
 
     /** Builds the tree over the parse (the time includes the triangles' boxes and renumbering them in leaf order), then caches both. */
-    private void build() {
+    private void build(LoadReport report) {
         long start = System.nanoTime();
         bvh = builder.equals("median")
             ? new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))

@@ -17,12 +17,20 @@ import raytracer.textures.ImageTexture;
 
 /**
  * Textures ({@code texture: {type: checker | constant | image, ...}}) and environment maps
- * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
+ * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene, and once for all
+ * the frames of an animation ({@link Images}).
  */
 final class TextureReader {
+    /** The images read, by file: as colours, and as data (normal maps). */
+    record Images(Map<Path, Film> colors, Map<Path, Film> data) {
+        Images() {
+            this(new HashMap<>(), new HashMap<>());
+        }
+    }
+
     private final Source source;
-    private final Map<Path, Film> images = new HashMap<>();
-    private final Map<Path, Film> linearImages = new HashMap<>();
+    private final Map<Path, Film> images;
+    private final Map<Path, Film> linearImages;
 
     /** The files read are noted in {@code inputs}. */
     private final LoadReport inputs;
@@ -32,8 +40,15 @@ final class TextureReader {
     }
 
     TextureReader(Source source, LoadReport inputs) {
+        this(source, inputs, new Images());
+    }
+
+    /** Reusing the images in {@code images} and keeping those it reads there. */
+    TextureReader(Source source, LoadReport inputs, Images images) {
         this.source = source;
         this.inputs = inputs;
+        this.images = images.colors();
+        this.linearImages = images.data();
     }
 
     Texture texture(Node node) throws SceneException {

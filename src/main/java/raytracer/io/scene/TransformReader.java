@@ -29,16 +29,24 @@ final class TransformReader {
             String kind = step.keyNodes().keySet().iterator().next();
             m = step(source, step, kind).multiply(m);
         }
+        return checked(source, node, m, "");
+    }
+
+    /**
+     * {@code m}, or the error at {@code node} of a transform that overflows or is singular;
+     * {@code when} ends the message's subject (" at frame 12" for an animated one).
+     */
+    static Matrix4 checked(Source source, Node node, Matrix4 m, String when) throws SceneException {
         double det = m.determinant3x3();
         if (!Double.isFinite(det) || !finite(m)) {
-            throw source.error(node, "the transform overflows: its determinant is " + det + " (scales, matrix entries or their "
+            throw source.error(node, "the transform" + when + " overflows: its determinant is " + det + " (scales, matrix entries or their "
                                      + "products past 1.8e308, the largest double)");
         }
         if (det == 0) {
-            throw source.error(node, "the transform is singular (a zero scale?)");
+            throw source.error(node, "the transform" + when + " is singular (a zero scale?)");
         }
         if (!finite(m.inverse())) {
-            throw source.error(node, "the transform's inverse overflows: its determinant " + det + " is too close to 0 "
+            throw source.error(node, "the transform's inverse" + when + " overflows: its determinant " + det + " is too close to 0 "
                                      + "(a scale near 0?)");
         }
         return m;

@@ -148,7 +148,7 @@ class SceneLoaderTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
-        unknown key in an object     | - {type: sphere, center: [0, 0, 0], radus: 1}                   | s.yaml:8:39: | unknown key 'radus' in sphere; allowed: casts-shadows, center, material, radius, transform, type
+        unknown key in an object     | - {type: sphere, center: [0, 0, 0], radus: 1}                   | s.yaml:8:39: | unknown key 'radus' in sphere; allowed: casts-shadows, center, material, name, radius, transform, type
         unknown object type          | - {type: teapot}                                                 | s.yaml:8:12: | teapot'; allowed: box, cylinder, mesh, plane, sphere
         negative radius              | - {type: sphere, center: [0, 0, 0], radius: -1}                  | s.yaml:8:47: | 'radius' in sphere must be greater than 0, got -1
         zero radius                  | - {type: sphere, center: [0, 0, 0], radius: 0}                   | s.yaml:8:47: | greater than 0
@@ -202,7 +202,7 @@ class SceneLoaderTest {
         assertMessage(error("camera: {eye: [1e307, 1e307, 1e307], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "less than 1e154 apart");
         assertMessage(error("tracer: path\n" + BASE), "s.yaml:1:9:", "'path'", "area-lighting, ray-cast, whitted");
         assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
-        assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
+        assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, animation, background, camera");
         assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
         assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: laser}")),
                       "s.yaml:5:", "laser", "allowed: directional, disk, point, rectangle, sphere");

@@ -1,0 +1,236 @@
+package raytracer.io.scene;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.yaml.snakeyaml.nodes.Node;
+import org.yaml.snakeyaml.nodes.ScalarNode;
+import raytracer.math.Matrix4;
+import raytracer.math.Point3D;
+import raytracer.math.Vector3D;
+
+/**
+ * A scene's {@code animation} section: how many frames and at what rate; the camera's eye,
+ * look-at, up and field of view as keyframes, or an orbit of the eye around a point; and keyframed
+ * transforms of named objects. Frames are numbered from 0; a key is placed by {@code frame} or by
+ * {@code time} in seconds (frame = time x fps). Format: docs/scene-format.md.
+ */
+final class Animation {
+    static final int MAX_FRAMES = 1_000_000;
+    static final double DEFAULT_FPS = 24;
+    private static final Set<String> KEYS = Set.of("frames", "fps", "camera", "objects");
+    private static final Set<String> CAMERA_CHANNELS = Set.of("eye", "look-at", "up", "fov");
+    private static final Set<String> OBJECT_CHANNELS = Set.of("translate", "rotate-x", "rotate-y", "rotate-z", "scale");
+
+    private final int frames;
+    private final double fps;
+    private final Node cameraNode;
+    /** Per camera channel that some key gives, its track; empty for an orbit or no camera motion. */
+    private final Map<String, Track> camera;
+    /** The orbit's centre (null: around the camera's look-at) and sweep in degrees, or null for keys. */
+    private final Point3D orbitCenter;
+    private final double orbitDegrees;
+    private final boolean orbit;
+    /** Per object name, its channels' tracks, and the node of its motion for messages. */
+    private final Map<String, Map<String, Track>> objects;
+    private final Map<String, Node> objectNodes;
+
+    private Animation(int frames, double fps, Node cameraNode, Map<String, Track> camera, boolean orbit, Point3D orbitCenter,
+                      double orbitDegrees, Map<String, Map<String, Track>> objects, Map<String, Node> objectNodes) {
+        this.frames = frames;
+        this.fps = fps;
+        this.cameraNode = cameraNode;
+        this.camera = camera;
+        this.orbit = orbit;
+        this.orbitCenter = orbitCenter;
+        this.orbitDegrees = orbitDegrees;
+        this.objects = objects;
+        this.objectNodes = objectNodes;
+    }
+
+    int frames() {
+        return frames;
+    }
+
+    double fps() {
+        return fps;
+    }
+
+    /** The names of the objects the animation moves, for checking them against the objects list. */
+    Map<String, Node> objectNodes() {
+        return objectNodes;
+    }
+
+    /** The camera of frame {@code frame}: {@code base} (the file's camera) with its animated values. */
+    CameraReader.Spec camera(CameraReader.Spec base, int frame) {
+        if (orbit) {
+            // the eye turned about the vertical axis through the centre by the sweep's share of this frame
+            Point3D center = orbitCenter != null ? orbitCenter : base.lookAt();
+            Point3D eye = Matrix4.translate(center.x(), center.y(), center.z())
+                .multiply(Matrix4.rotateY(orbitDegrees * frame / frames))
+                .multiply(Matrix4.translate(-center.x(), -center.y(), -center.z())).transform(base.eye());
+            return base.withView(eye, base.lookAt(), base.up(), base.fov());
+        }
+        if (camera.isEmpty()) {
+            return base;
+        }
+        return base.withView(point(camera.get("eye"), frame, base.eye()), point(camera.get("look-at"), frame, base.lookAt()),
+                             vector(camera.get("up"), frame, base.up()),
+                             camera.containsKey("fov") ? camera.get("fov").at(frame)[0] : base.fov());
+    }
+
+    /** The node of the camera's motion, for messages about the camera of a frame. */
+    Node cameraNode() {
+        return cameraNode;
+    }
+
+    /**
+     * The motion of object {@code name} at {@code frame}, applied after the object's own transform:
+     * scale, rotate-x, rotate-y, rotate-z, translate, in that order (as a transform list of those
+     * steps); null when the animation does not move the object.
+     */
+    Matrix4 transform(String name, int frame) {
+        Map<String, Track> tracks = name == null ? null : objects.get(name);
+        if (tracks == null) {
+            return null;
+        }
+        double[] s = tracks.containsKey("scale") ? tracks.get("scale").at(frame) : new double[] {1, 1, 1};
+        double[] t = tracks.containsKey("translate") ? tracks.get("translate").at(frame) : new double[] {0, 0, 0};
+        Matrix4 m = Matrix4.scale(s[0], s[1], s[2]);
+        for (String axis : List.of("rotate-x", "rotate-y", "rotate-z")) {
+            if (tracks.containsKey(axis)) {
+                double degrees = tracks.get(axis).at(frame)[0];
+                m = (axis.equals("rotate-x") ? Matrix4.rotateX(degrees) : axis.equals("rotate-y") ? Matrix4.rotateY(degrees)
+                     : Matrix4.rotateZ(degrees)).multiply(m);
+            }
+        }
+        return Matrix4.translate(t[0], t[1], t[2]).multiply(m);
+    }
+
+    private static Point3D point(Track track, int frame, Point3D fallback) {
+        if (track == null) {
+            return fallback;
+        }
+        double[] p = track.at(frame);
+        return new Point3D(p[0], p[1], p[2]);
+    }
+
+    private static Vector3D vector(Track track, int frame, Vector3D fallback) {
+        if (track == null) {
+            return fallback;
+        }
+        double[] v = track.at(frame);
+        return new Vector3D(v[0], v[1], v[2]);
+    }
+
+    /** Reads the section; {@code orthographic} says whether the file's camera has no field of view. */
+    static Animation read(Source source, Node node, boolean orthographic) throws SceneException {
+        YamlObject a = new YamlObject(source, node, "animation", KEYS);
+        int frames = a.integer("frames", 0, 1, MAX_FRAMES);
+        if (!a.has("frames")) {
+            throw source.error(node, "animation needs the key 'frames' (how many frames, numbered from 0)");
+        }
+        double fps = a.number("fps", DEFAULT_FPS, 0, true);
+        Map<String, Track> camera = new LinkedHashMap<>();
+        boolean orbit = false;
+        Point3D center = null;
+        double degrees = 360;
+        if (a.has("camera")) {
+            YamlObject c = new YamlObject(source, a.raw("camera"), "the animation's camera", Set.of("keys", "interpolation", "orbit"));
+            if (c.has("orbit") == c.has("keys")) {
+                throw source.error(a.raw("camera"), "the animation's camera needs either 'keys' or 'orbit'");
+            }
+            if (c.has("orbit")) {
+                if (c.has("interpolation")) {
+                    throw source.error(c.raw("interpolation"), "'interpolation' is for keys; an orbit turns at an even rate");
+                }
+                YamlObject o = new YamlObject(source, c.raw("orbit"), "orbit", Set.of("center", "degrees"));
+                orbit = true;
+                center = o.point("center", null);
+                degrees = o.number("degrees", 360);
+            } else {
+                camera = tracks(source, c, frames, fps, CAMERA_CHANNELS, "camera key");
+                if (orthographic && camera.containsKey("fov")) {
+                    throw source.error(c.raw("keys"), "an orthographic camera has no 'fov' to animate");
+                }
+            }
+        }
+        Map<String, Map<String, Track>> objects = new LinkedHashMap<>();
+        Map<String, Node> objectNodes = new LinkedHashMap<>();
+        if (a.has("objects")) {
+            YamlObject names = new YamlObject(source, a.raw("objects"), "the animation's objects", AnyName.INSTANCE);
+            for (Map.Entry<String, Node> entry : names.keyNodes().entrySet()) {
+                String name = entry.getKey();
+                YamlObject motion = new YamlObject(source, names.raw(name), "motion of object '" + name + "'",
+                                                   Set.of("keys", "interpolation"));
+                if (!motion.has("keys")) {
+                    throw source.error(names.raw(name), "motion of object '" + name + "' needs the key 'keys'");
+                }
+                objects.put(name, tracks(source, motion, frames, fps, OBJECT_CHANNELS, "key of object '" + name + "'"));
+                objectNodes.put(name, entry.getValue());
+            }
+        }
+        return new Animation(frames, fps, a.has("camera") ? a.raw("camera") : node, camera, orbit, center, degrees, objects,
+                             objectNodes);
+    }
+
+    /** The tracks of a motion's {@code keys}: one per channel that some key gives, through the keys that give it. */
+    private static Map<String, Track> tracks(Source source, YamlObject motion, int frames, double fps, Set<String> channels,
+                                             String what) throws SceneException {
+        String interpolation = motion.string("interpolation", "linear");
+        if (!interpolation.equals("linear") && !interpolation.equals("smooth")) {
+            throw source.error(motion.raw("interpolation"), "unknown interpolation '" + interpolation + "'; allowed: linear, smooth");
+        }
+        List<Node> keys = motion.list("keys");
+        if (keys.isEmpty()) {
+            throw source.error(motion.raw("keys"), "'keys' must list at least one key such as {frame: 0, ...}");
+        }
+        Set<String> allowed = new java.util.HashSet<>(channels);
+        allowed.add("frame");
+        allowed.add("time");
+        Map<String, List<double[]>> times = new LinkedHashMap<>();
+        Map<String, List<double[]>> values = new LinkedHashMap<>();
+        double previous = Double.NEGATIVE_INFINITY;
+        for (Node keyNode : keys) {
+            YamlObject key = new YamlObject(source, keyNode, what, allowed);
+            if (key.has("frame") == key.has("time")) {
+                throw source.error(keyNode, what + " needs either 'frame' (0 to " + (frames - 1) + ") or 'time' (seconds)");
+            }
+            double frame = key.has("frame") ? key.requiredNumber("frame") : key.requiredNumber("time") * fps;
+            if (!(frame > previous)) {
+                throw source.error(key.has("frame") ? key.raw("frame") : key.raw("time"), "keys must be in order of time, "
+                                   + "each after the one before");
+            }
+            previous = frame;
+            for (String channel : channels) {
+                if (key.has(channel)) {
+                    times.computeIfAbsent(channel, k -> new ArrayList<>()).add(new double[] {frame});
+                    values.computeIfAbsent(channel, k -> new ArrayList<>()).add(value(key, channel));
+                }
+            }
+        }
+        Map<String, Track> tracks = new LinkedHashMap<>();
+        for (String channel : times.keySet()) {
+            double[] t = times.get(channel).stream().mapToDouble(x -> x[0]).toArray();
+            tracks.put(channel, new Track(t, values.get(channel).toArray(new double[0][]), interpolation.equals("smooth")));
+        }
+        return tracks;
+    }
+
+    /** A channel's value at a key: a triple, or a number; a scale may be either (a number scales evenly). */
+    private static double[] value(YamlObject key, String channel) throws SceneException {
+        return switch (channel) {
+            case "eye", "look-at", "up", "translate" -> key.triple(channel, null);
+            case "scale" -> {
+                if (key.raw(channel) instanceof ScalarNode) {
+                    double s = key.requiredNumber(channel);
+                    yield new double[] {s, s, s};
+                }
+                yield key.triple(channel, null);
+            }
+            default -> new double[] {key.requiredNumber(channel)};
+        };
+    }
+}

@@ -1,0 +1,142 @@
+package raytracer.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.FileTime;
+import java.util.Arrays;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import raytracer.math.Matrix4;
+import raytracer.math.Point3D;
+
+/**
+ * {@code render SCENE --frames A-B -o pattern}: the frames of one JVM, the scene read once and each
+ * frame prepared anew, are the bytes of each frame rendered alone (so nothing one frame's analysis
+ * or preparation changed leaks into the next), a frame whose camera is a still's camera is that
+ * still's image, {@code --resume} skips only complete files, and misuse is one line.
+ */
+class FramesTest {
+    @TempDir
+    Path dir;
+
+    /** A mirror ball by a box under a point and an area light (so samples are drawn, and the analysis has work). */
+    private static final String BODY = """
+        image: {width: 24, height: 16, samples: 4}
+        camera: {eye: [0, 1, 6], look-at: [0, 0.5, 0], fov: 40}
+        lights:
+          - {type: point, position: [2, 6, 4], intensity: 60}
+          - {type: rectangle, corner: [-1, 4, -1], edge-a: [2, 0, 0], edge-b: [0, 0, 2], radiance: 2, samples: 2}
+        materials:
+          mirror: {type: reflective, kr: 0.6}
+        objects:
+          - {type: plane, normal: [0, 1, 0]}
+          - {type: sphere, name: ball, center: [0, 0.5, 0], radius: 0.5, material: mirror}
+          - {type: box, min: [-2, 0, -2], max: [-1.5, 1, -1.5]}
+        """;
+
+    private Path scene(String name, String text) throws IOException {
+        return Files.writeString(dir.resolve(name), text);
+    }
+
+    private Path animated() throws IOException {
+        return scene("anim.yaml", BODY + """
+            animation:
+              frames: 4
+              camera: {orbit: {center: [0, 0.5, 0], degrees: 180}}
+              objects:
+                ball:
+                  keys: [{frame: 0, translate: [-1, 0, 0]}, {frame: 4, translate: [1, 0.5, 0]}]
+            """);
+    }
+
+    @Test
+    void framesInOneRunAreTheFramesRenderedAlone() throws IOException {
+        Path scene = animated();
+        RenderCommandTest.Result all = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", dir.resolve("f-%02d.pfm").toString());
+        assertEquals(0, all.code(), all.err());
+        assertTrue(all.err().contains("frames 0-3 of " + scene + ": 4 rendered"), all.err());
+        for (int f = 0; f < 4; f++) {
+            Path alone = dir.resolve("alone-" + f + ".pfm");
+            RenderCommandTest.Result one = RenderCommandTest.run(scene.toString(), "--frames", Integer.toString(f), "-o",
+                                                                 dir.resolve("alone-%d.pfm").toString(), "-q");
+            assertEquals(0, one.code(), one.err());
+            assertArrayEquals(Files.readAllBytes(alone), Files.readAllBytes(dir.resolve(String.format("f-%02d.pfm", f))), "frame " + f);
+        }
+        assertFalse(Arrays.equals(Files.readAllBytes(dir.resolve("f-00.pfm")), Files.readAllBytes(dir.resolve("f-01.pfm"))));
+    }
+
+    @Test
+    void aFrameWhoseViewIsAStillsIsThatStill() throws IOException {
+        Path scene = animated();
+        // frame 2 of 4 of a half turn: the eye turned 90 degrees about (0, 0.5, 0), to about (6, 1, 0), as the
+        // animation computes it; the ball half way from (-1, 0, 0) to (1, 0.5, 0), which is exact
+        Point3D eye = Matrix4.translate(0, 0.5, 0).multiply(Matrix4.rotateY(90)).multiply(Matrix4.translate(0, -0.5, 0))
+            .transform(new Point3D(0, 1, 6));
+        String still = BODY.replace("eye: [0, 1, 6]", "eye: [" + eye.x() + ", " + eye.y() + ", " + eye.z() + "]")
+            .replace("{type: sphere, name: ball, center: [0, 0.5, 0], radius: 0.5, material: mirror}",
+                     "{type: sphere, name: ball, center: [0, 0.5, 0], radius: 0.5, material: mirror, transform: [{translate: [0, 0.25, 0]}]}");
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "2", "-o", dir.resolve("a-%d.pfm").toString(), "-q").code());
+        RenderCommandTest.Result r = RenderCommandTest.run(scene("still.yaml", still).toString(), "-o", dir.resolve("still.pfm").toString(), "-q");
+        assertEquals(0, r.code(), r.err());
+        assertArrayEquals(Files.readAllBytes(dir.resolve("still.pfm")), Files.readAllBytes(dir.resolve("a-2.pfm")));
+    }
+
+    @Test
+    void resumeSkipsCompleteFramesOnly() throws IOException {
+        Path scene = animated();
+        String pattern = dir.resolve("r-%d.png").toString();
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "0-1", "-o", pattern, "-q").code());
+        FileTime old = FileTime.fromMillis(1_000_000_000_000L);
+        Files.setLastModifiedTime(dir.resolve("r-0.png"), old);
+        byte[] whole = Files.readAllBytes(dir.resolve("r-1.png"));
+        Files.write(dir.resolve("r-1.png"), Arrays.copyOf(whole, whole.length - 5)); // cut short
+        RenderCommandTest.Result r = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "--resume");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("3 rendered, 1 already complete (--resume)"), r.err());
+        assertEquals(old, Files.getLastModifiedTime(dir.resolve("r-0.png")), "a complete frame is not rendered again");
+        assertArrayEquals(whole, Files.readAllBytes(dir.resolve("r-1.png")), "a frame cut short is");
+        assertTrue(FrameFiles.complete(dir.resolve("r-3.png")));
+        assertTrue(Files.list(dir).noneMatch(p -> p.getFileName().toString().contains("partial")));
+    }
+
+    @Test
+    void patternsAndRanges() {
+        assertNull(FrameFiles.whyNotPattern("out/frame-%04d.png"));
+        assertNull(FrameFiles.whyNotPattern("100%%-%d.pfm"));
+        assertTrue(FrameFiles.whyNotPattern("frame.png").contains("it has 0"));
+        assertTrue(FrameFiles.whyNotPattern("%d-%d.png").contains("it has 2"));
+        assertTrue(FrameFiles.whyNotPattern("%s.png").contains("a % in it must be"));
+        assertEquals("scene-%04d.png", FrameFiles.defaultPattern(Path.of("dir/scene.yaml")));
+        assertEquals(Path.of("f-0012.png"), FrameFiles.name("f-%04d.png", 12));
+        assertEquals(new FrameRange(3, 3), FrameRange.parse("3"));
+        assertEquals(120, FrameRange.parse("0-119").count());
+    }
+
+    @Test
+    void misuseIsOneLine() throws IOException {
+        Path scene = animated();
+        Path still = scene("still.yaml", BODY);
+        String out = dir.resolve("x-%d.png").toString();
+        assertError(RenderCommandTest.run(scene.toString(), "--frames", "2-9", "-o", out),
+                    "--frames 2-9: the scene's animation has 4 frames, 0 to 3");
+        assertError(RenderCommandTest.run(still.toString(), "--frames", "0-1", "-o", out), "the scene has no animation section");
+        assertError(RenderCommandTest.run(scene.toString(), "--frames", "0-1", "-o", dir.resolve("x.png").toString()),
+                    "cannot name the frames: it must hold one %d or %04d");
+        assertError(RenderCommandTest.run(scene.toString(), "--frames", "3-1", "-o", out), "the last frame comes before the first");
+        assertError(RenderCommandTest.run(scene.toString(), "--resume", "-o", dir.resolve("x.png").toString()), "--resume is for --frames");
+        assertError(RenderCommandTest.run(scene.toString(), "--frames", "1", "--repeat", "2", "-o", out), "--repeat is for a still");
+    }
+
+    private static void assertError(RenderCommandTest.Result r, String fragment) {
+        assertEquals(ErrorReport.BAD_USAGE, r.code(), r.err());
+        assertEquals(1, r.lines().length, r.err());
+        assertTrue(r.err().startsWith("render: error: ") && r.err().contains(fragment), r.err());
+    }
+}
