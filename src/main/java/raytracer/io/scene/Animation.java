@@ -5,11 +5,16 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import org.yaml.snakeyaml.DumperOptions;
+import org.yaml.snakeyaml.error.Mark;
+import org.yaml.snakeyaml.nodes.MappingNode;
 import org.yaml.snakeyaml.nodes.Node;
+import org.yaml.snakeyaml.nodes.NodeTuple;
 import org.yaml.snakeyaml.nodes.ScalarNode;
+import org.yaml.snakeyaml.nodes.SequenceNode;
+import org.yaml.snakeyaml.nodes.Tag;
 import raytracer.math.Matrix4;
 import raytracer.math.Point3D;
-import raytracer.math.Vector3D;
 
 /**
  * A scene's {@code animation} section: how many frames and at what rate; the camera's eye,
@@ -63,27 +68,46 @@ final class Animation {
         return objectNodes;
     }
 
-    /** The camera of frame {@code frame}: {@code base} (the file's camera) with its animated values. */
-    CameraReader.Spec camera(CameraReader.Spec base, int frame) {
-        if (orbit) {
-            // the eye turned about the vertical axis through the centre by the sweep's share of this frame
-            Point3D center = orbitCenter != null ? orbitCenter : base.lookAt();
-            Point3D eye = Matrix4.translate(center.x(), center.y(), center.z())
-                .multiply(Matrix4.rotateY(orbitDegrees * frame / frames))
-                .multiply(Matrix4.translate(-center.x(), -center.y(), -center.z())).transform(base.eye());
-            return base.withView(eye, base.lookAt(), base.up(), base.fov());
+    /**
+     * The camera section of frame {@code frame}: the file's ({@code base}; null when it has none)
+     * with the animated eye, look-at, up and field of view in place of its own, as YAML nodes
+     * placed at the animation's camera for messages. {@link CameraReader} reads it as it reads the
+     * file's, so a frame's camera is made, and checked, as a still's is.
+     */
+    Node camera(Source source, Node base, int frame) throws SceneException {
+        List<NodeTuple> tuples = new ArrayList<>();
+        if (base instanceof MappingNode mapping) {
+            tuples.addAll(mapping.getValue());
         }
-        if (camera.isEmpty()) {
+        if (!orbit && camera.isEmpty()) {
             return base;
         }
-        return base.withView(point(camera.get("eye"), frame, base.eye()), point(camera.get("look-at"), frame, base.lookAt()),
-                             vector(camera.get("up"), frame, base.up()),
-                             camera.containsKey("fov") ? camera.get("fov").at(frame)[0] : base.fov());
-    }
-
-    /** The node of the camera's motion, for messages about the camera of a frame. */
-    Node cameraNode() {
-        return cameraNode;
+        YamlObject file = base == null ? null : new YamlObject(source, base, "camera", AnyName.INSTANCE);
+        Point3D eye = file == null ? CameraReader.DEFAULT_EYE : file.point("eye", CameraReader.DEFAULT_EYE);
+        Point3D lookAt = file == null ? CameraReader.DEFAULT_LOOK_AT : file.point("look-at", CameraReader.DEFAULT_LOOK_AT);
+        Map<String, double[]> values = new LinkedHashMap<>();
+        if (orbit) {
+            // the eye turned about the vertical axis through the centre by the sweep's share of this frame
+            Point3D center = orbitCenter != null ? orbitCenter : lookAt;
+            Point3D turned = Matrix4.translate(center.x(), center.y(), center.z())
+                .multiply(Matrix4.rotateY(orbitDegrees * frame / frames))
+                .multiply(Matrix4.translate(-center.x(), -center.y(), -center.z())).transform(eye);
+            values.put("eye", new double[] {turned.x(), turned.y(), turned.z()});
+        }
+        camera.forEach((channel, track) -> values.put(channel, track.at(frame)));
+        tuples.removeIf(t -> t.getKeyNode() instanceof ScalarNode key && values.containsKey(key.getValue()));
+        Mark start = cameraNode.getStartMark();
+        Mark end = cameraNode.getEndMark();
+        for (Map.Entry<String, double[]> value : values.entrySet()) {
+            List<Node> numbers = new ArrayList<>();
+            for (double v : value.getValue()) {
+                numbers.add(new ScalarNode(Tag.FLOAT, Double.toString(v), start, end, DumperOptions.ScalarStyle.PLAIN));
+            }
+            Node node = numbers.size() == 1 ? numbers.get(0)
+                : new SequenceNode(Tag.SEQ, true, numbers, start, end, DumperOptions.FlowStyle.FLOW);
+            tuples.add(new NodeTuple(new ScalarNode(Tag.STR, value.getKey(), start, end, DumperOptions.ScalarStyle.PLAIN), node));
+        }
+        return new MappingNode(Tag.MAP, true, tuples, start, end, DumperOptions.FlowStyle.FLOW);
     }
 
     /**
@@ -107,22 +131,6 @@ final class Animation {
             }
         }
         return Matrix4.translate(t[0], t[1], t[2]).multiply(m);
-    }
-
-    private static Point3D point(Track track, int frame, Point3D fallback) {
-        if (track == null) {
-            return fallback;
-        }
-        double[] p = track.at(frame);
-        return new Point3D(p[0], p[1], p[2]);
-    }
-
-    private static Vector3D vector(Track track, int frame, Vector3D fallback) {
-        if (track == null) {
-            return fallback;
-        }
-        double[] v = track.at(frame);
-        return new Vector3D(v[0], v[1], v[2]);
     }
 
     /** Reads the section; {@code orthographic} says whether the file's camera has no field of view. */

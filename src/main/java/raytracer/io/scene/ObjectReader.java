@@ -23,11 +23,9 @@ import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.Triangle;
 
-/**
- * One entry of the {@code objects} list: a shape, its material, an optional transform, and an
- * optional name by which an animation moves it.
- */
+/** One entry of the {@code objects} list: a shape, its material and an optional transform. */
 final class ObjectReader {
+    // and an optional name, by which an animation moves the object (Animation, SceneFile)
     private static final Set<String> COMMON = Set.of("type", "name", "material", "transform", "casts-shadows");
     private static final Map<String, Set<String>> KEYS = Map.of(
         "sphere", Set.of("center", "radius"),

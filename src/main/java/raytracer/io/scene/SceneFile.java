@@ -31,7 +31,6 @@ public final class SceneFile {
     private final YamlObject scene;
     private final Path file;
     private final ViewPlane viewPlane;
-    private final CameraReader.Spec camera;
     private final RayTreeSettings rayTree;
     private final DisplayEncoding encoding;
     /** Null for a still. */
@@ -48,9 +47,8 @@ public final class SceneFile {
         this.areaLightSamples = areaLightSamples;
         this.cache = cache;
         this.root = SceneLoader.root(source, text);
-        this.scene = new YamlObject(source, root, "the scene", SceneLoader.SECTIONS);
+        this.scene = new YamlObject(source, root, "the scene", SceneLoader.FILE_SECTIONS);
         this.viewPlane = SceneLoader.readImage(source, scene);
-        this.camera = scene.has("camera") ? CameraReader.spec(source, scene.raw("camera")) : CameraReader.defaultSpec();
         RayTreeSettings tree = RayTreeSettings.FULL_TREE.withCutoff(SceneLoader.readCutoff(source, scene));
         if (scene.has("pass")) {
             try {
@@ -62,7 +60,9 @@ public final class SceneFile {
         this.rayTree = tree;
         this.encoding = SceneLoader.readEncoding(source, scene);
         this.animation = scene.has("animation")
-            ? Animation.read(source, scene.raw("animation"), camera.kind().equals("orthographic")) : null;
+            ? Animation.read(source, scene.raw("animation"), scene.has("camera")
+                             && YamlObject.peekType(source, scene.raw("camera"), "camera", "pinhole").equals("orthographic"))
+            : null;
         checkNames();
     }
 
@@ -160,15 +160,13 @@ public final class SceneFile {
         if (file != null) {
             report.addInput(file);
         }
+        Node cameraNode = animation == null ? scene.raw("camera") : animation.camera(source, scene.raw("camera"), frame);
         Camera camera;
-        if (animation == null) {
-            camera = scene.has("camera") ? CameraReader.make(source, scene.raw("camera"), this.camera) : this.camera.make();
-        } else {
-            try {
-                camera = animation.camera(this.camera, frame).make();
-            } catch (IllegalArgumentException e) {
-                throw source.error(animation.cameraNode(), "the camera" + when + ": " + e.getMessage());
-            }
+        try {
+            camera = cameraNode != null ? CameraReader.read(source, cameraNode) : CameraReader.defaultCamera();
+        } catch (SceneException e) {
+            // the frame's camera is the file's with the animated values: a bad one says which frame
+            throw animation == null ? e : new SceneException(e.getMessage() + " (the camera" + when + ")");
         }
         World world = new World(viewPlane, camera, SceneLoader.readAmbient(source, scene));
         TextureReader textures = new TextureReader(source, report, images);

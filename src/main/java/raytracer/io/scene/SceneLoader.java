@@ -50,8 +50,7 @@ import raytracer.tracers.Whitted;
  */
 public final class SceneLoader {
     static final Set<String> SECTIONS =
-        Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects",
-               "animation");
+        Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     static final double AMBIENT_RADIANCE = 0.1;
     static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding",
                                                 "filter", "filter-stddev");
@@ -64,7 +63,16 @@ public final class SceneLoader {
      */
     static final int MAX_CHARACTERS = 64 << 20;
 
+    /** The sections of a scene file: {@link #SECTIONS} and the animation, which {@link SceneFile} reads. */
+    static final Set<String> FILE_SECTIONS = union(SECTIONS, "animation");
+
     private SceneLoader() {
+    }
+
+    private static Set<String> union(Set<String> names, String name) {
+        Set<String> all = new java.util.HashSet<>(names);
+        all.add(name);
+        return Set.copyOf(all);
     }
 
     /** Reads a scene file; its meshes are parsed, not cached. */

@@ -17,11 +17,10 @@ import raytracer.textures.ImageTexture;
 
 /**
  * Textures ({@code texture: {type: checker | constant | image, ...}}) and environment maps
- * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene, and once for all
- * the frames of an animation ({@link Images}).
+ * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
  */
 final class TextureReader {
-    /** The images read, by file: as colours, and as data (normal maps). */
+    /** The images read, by file: as colours, and as data (normal maps); the frames of an animation share them. */
     record Images(Map<Path, Film> colors, Map<Path, Film> data) {
         Images() {
             this(new HashMap<>(), new HashMap<>());

@@ -12,12 +12,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.yaml.snakeyaml.nodes.Node;
 import raytracer.accel.MeshBVH;
 import raytracer.core.GeometricObject;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.math.Point3D;
-import raytracer.math.Vector3D;
 import raytracer.render.Renders;
 import raytracer.shapes.Instance;
 
@@ -81,13 +81,16 @@ class AnimationTest {
             """);
         assertEquals(8, s.frames());
         assertEquals(24, s.fps());
-        CameraReader.Spec base = CameraReader.defaultSpec().withView(new Point3D(0, 1, 6), new Point3D(0, 1, 0), Vector3D.UP, 40);
-        Animation a = Animation.read(new Source("x", null), SceneLoader.root(new Source("x", null), """
+        Source x = new Source("x", null);
+        Node base = SceneLoader.root(x, "{eye: [0, 1, 6], look-at: [0, 1, 0], fov: 40}");
+        Animation a = Animation.read(x, SceneLoader.root(x, """
             frames: 8
             camera: {orbit: {center: [0, 1, 0], degrees: 360}}
             """), false);
         for (int f = 0; f < 8; f++) {
-            Point3D eye = a.camera(base, f).eye();
+            YamlObject camera = new YamlObject(x, a.camera(x, base, f), "camera", AnyName.INSTANCE);
+            assertEquals(40, camera.number("fov", 0), "what is not animated stays");
+            Point3D eye = camera.point("eye", null);
             double angle = Math.toRadians(45 * f);
             // rotate-y by angle takes (0, 0, 6) to (6 sin, 0, 6 cos)
             assertEquals(6 * Math.sin(angle), eye.x(), 1e-12);
@@ -98,7 +101,8 @@ class AnimationTest {
 
     @Test
     void cameraKeysGiveTheirValuesAtTheirFramesAndKeepTheRestOfTheCamera() throws Exception {
-        Animation a = Animation.read(new Source("x", null), SceneLoader.root(new Source("x", null), """
+        Source x = new Source("x", null);
+        Animation a = Animation.read(x, SceneLoader.root(x, """
             frames: 31
             fps: 10
             camera:
@@ -108,11 +112,16 @@ class AnimationTest {
                 - {time: 1, eye: [3, 2, 6]}
                 - {frame: 30, eye: [6, 1, 0], fov: 20}
             """), false);
-        CameraReader.Spec base = CameraReader.defaultSpec();
-        assertEquals(new Point3D(3, 2, 6), a.camera(base, 10).eye(), "time 1 s at 10 fps is frame 10");
-        assertEquals(new Point3D(6, 1, 0), a.camera(base, 30).eye());
-        assertEquals(30, a.camera(base, 15).fov(), 1e-12, "fov keys at 0 and 30 only: smoothstep's midpoint");
-        assertEquals(base.lookAt(), a.camera(base, 15).lookAt(), "look-at is not animated");
+        assertEquals(new Point3D(3, 2, 6), camera(a, 10).point("eye", null), "time 1 s at 10 fps is frame 10");
+        assertEquals(new Point3D(6, 1, 0), camera(a, 30).point("eye", null));
+        assertEquals(30, camera(a, 15).number("fov", 0), 1e-12, "fov keys at 0 and 30 only: smoothstep's midpoint");
+        assertEquals(new Point3D(0, 2, 0), camera(a, 15).point("look-at", null), "look-at is not animated");
+    }
+
+    private static YamlObject camera(Animation a, int frame) throws SceneException {
+        Source x = new Source("x", null);
+        Node base = SceneLoader.root(x, "{type: thin-lens, look-at: [0, 2, 0], lens-radius: 0.1}");
+        return new YamlObject(x, a.camera(x, base, frame), "camera", AnyName.INSTANCE);
     }
 
     @Test
@@ -213,7 +222,8 @@ class AnimationTest {
             animation: {frames: 4, camera: {keys: [{frame: 0, fov: 40}, {frame: 3, fov: 180}]}}
             """);
         SceneException camera = assertThrows(SceneException.class, () -> fov.load(3));
-        assertTrue(camera.getMessage().contains("the camera at frame 3: field of view must be between 0 and 180"), camera.getMessage());
+        assertTrue(camera.getMessage().contains("a.yaml:8:32: field of view must be between 0 and 180 degrees, got 180.0 "
+                                                + "(the camera at frame 3)"), camera.getMessage());
     }
 
     private void assertMessage(String animation, String expected) throws IOException {
