@@ -74,8 +74,10 @@ class ArchitectureTest {
         Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "io.ply", "reference"))),
         // the allocation study's textbook path, beside the renderer; no package may use it (none lists it)
         Map.entry("study", Set.of("math", "core", "brdf", "materials", "lights", "tracers", "render")),
+        // a scene file and a render's options made into a scene to render, for the command line and the Spark job
+        Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene"))),
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",
-                                                 "image.chart"))));
+                                                 "image.chart", "api"))));
 
     private static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> all = new HashSet<>(a);

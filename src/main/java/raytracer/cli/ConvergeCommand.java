@@ -18,6 +18,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import raytracer.api.FilterChoice;
 import raytracer.accel.Aggregation;
 import raytracer.core.Sampler;
 import raytracer.core.ViewPlane;

@@ -1,6 +1,7 @@
 package raytracer.cli;
 
 import picocli.CommandLine.Option;
+import raytracer.api.FilterChoice;
 
 /** The pixel-filter options that render and converge share (a picocli mixin). */
 final class FilterOptions {

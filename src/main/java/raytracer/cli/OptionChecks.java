@@ -5,20 +5,14 @@ import java.util.Map;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
-import raytracer.accel.Aggregation;
-import raytracer.core.Sampler;
-import raytracer.core.ShadingPass;
-import raytracer.core.ViewPlane;
-import raytracer.image.DisplayEncoding;
-import raytracer.image.Film;
+import raytracer.api.SceneOptions;
 import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
-import raytracer.samplers.Samplers;
 
 /**
  * Checks the option values that picocli's types cannot (ranges, names, the output file) and parses
  * them into a {@link RenderRequest}. Every bad value is a usage error, exit code 2, found before
- * the scene is loaded.
+ * the scene is loaded. The options that change the scene are checked as {@link SceneOptions}.
  */
 final class OptionChecks {
     private final CommandLine commandLine;
@@ -28,19 +22,10 @@ final class OptionChecks {
     }
 
     RenderRequest check(RenderCommand o) {
-        requireAtLeast("--width", o.width, 1);
-        requireAtLeast("--height", o.height, 1);
-        requireWithin("--spp", o.samples, 1, Sampler.MAX_SAMPLES);
-        requireWithin("--max-depth", o.maxDepth, 0, ViewPlane.MAX_DEPTH);
         requireWithin("--threads", o.threads, 1, Workers.MAX_THREADS);
         requireAtLeast("--repeat", o.repeat, 1);
-        if (o.cutoff != null && !(o.cutoff >= 0 && o.cutoff < 1)) {
-            throw new ParameterException(commandLine, "--cutoff must be in [0, 1), got " + o.cutoff);
-        }
-        if (o.width != null && o.height != null && (long) o.width * o.height > Film.MAX_PIXELS) {
-            throw new ParameterException(commandLine, "--width x --height is " + (long) o.width * o.height
-                                                      + " pixels, more than one image holds (" + Film.MAX_PIXELS + ")");
-        }
+        boolean costView = usage(() -> parseView(o.view));
+        SceneOptions options = o.sceneFlags.options(commandLine, costView);
         FrameRange frames = o.frames == null ? null : usage(() -> FrameRange.parse(o.frames));
         String pattern = null;
         if (frames == null && o.resume) {
@@ -62,21 +47,6 @@ final class OptionChecks {
             // a bad -o is a bad option value, found before rendering, not after
             throw new ParameterException(commandLine, "cannot write " + out + ": " + unwritable);
         }
-        Aggregation.Mode accel = usage(() -> Aggregation.Mode.parse(o.accel));
-        boolean costView = usage(() -> parseView(o.view));
-        ShadingPass pass = o.pass == null ? null : usage(() -> ShadingPass.parse(o.pass));
-        DisplayEncoding encoding = o.encoding == null ? null : usage(() -> parseEncoding(o.encoding));
-        Sampler sampler = o.sampler == null ? null : usage(() -> Samplers.byName(o.sampler));
-        FilterChoice filter = usage(o.filter::choice);
-        SceneOverrides overrides = new SceneOverrides(o.width, o.height, o.samples, sampler, filter, o.maxDepth, pass, o.cutoff,
-                                                      encoding);
-        if (o.cacheDir != null && o.cacheDir.toString().isEmpty()) {
-            // an empty path is the working directory, which is no place for cache files
-            throw new ParameterException(commandLine, "--cache-dir must name a folder, got an empty name");
-        }
-        if (o.noCache && o.cacheDir != null) {
-            throw new ParameterException(commandLine, "--no-cache and --cache-dir exclude each other");
-        }
         if (o.show) {
             // AWT is loaded here only, and only for --show: a run without it loads no AWT class
             String why = GraphicalDisplay.whyNone();
@@ -84,11 +54,7 @@ final class OptionChecks {
                 throw new ParameterException(commandLine, "--show needs a graphical display: " + why);
             }
         }
-        Path meshCache = o.noCache ? null
-            : o.cacheDir != null ? o.cacheDir : MeshCache.defaultDir(System.getenv(), System.getProperty("user.home"));
-        long meshCacheMax = cacheMax(o.cacheMax, System.getenv());
-        return new RenderRequest(o.scene, out, overrides, accel, costView, !o.noSkip, o.threads, o.seed, o.repeat, o.stats, o.quiet,
-                                 meshCache, meshCacheMax, o.show, frames, pattern, o.resume);
+        return new RenderRequest(o.scene, out, options, o.threads, o.repeat, o.stats, o.quiet, o.show, frames, pattern, o.resume);
     }
 
     /**
@@ -119,13 +85,8 @@ final class OptionChecks {
         };
     }
 
-    private static DisplayEncoding parseEncoding(String encoding) {
-        return DisplayEncoding.named(encoding).orElseThrow(() -> new IllegalArgumentException(
-            "unknown --encoding '" + encoding + "'; allowed: " + DisplayEncoding.NAMES));
-    }
-
     /** Runs an option's parser, turning its complaint into a usage error. */
-    private <T> T usage(Supplier<T> parse) {
+    <T> T usage(Supplier<T> parse) {
         try {
             return parse.get();
         } catch (IllegalArgumentException e) {

@@ -10,9 +10,6 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import raytracer.accel.Aggregation;
-import raytracer.core.ViewPlane;
-import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 
 /**
@@ -31,72 +28,15 @@ public final class RenderCommand implements Callable<Integer> {
             description = "Output image, .png (sRGB 8-bit) or .pfm (linear float). Default: <scene name>.png")
     Path output;
 
-    @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width in pixels (overrides the scene).")
-    Integer width;
-
-    @Option(names = {"-H", "--height"}, paramLabel = "H", description = "Image height in pixels (overrides the scene).")
-    Integer height;
-
-    @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
-    Integer samples;
-
-    @Option(names = "--sampler", paramLabel = "NAME", completionCandidates = OptionNames.SamplerNames.class,
-            description = "Sample pattern (overrides the scene): ${COMPLETION-CANDIDATES}.")
-    String sampler;
-
     @Mixin
-    FilterOptions filter = new FilterOptions();
+    SceneFlags sceneFlags = new SceneFlags();
 
     @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
     int threads = Runtime.getRuntime().availableProcessors();
 
-    @Option(names = "--seed", paramLabel = "S", description = "Random seed; the same seed gives the same image. Default: ${DEFAULT-VALUE}.")
-    long seed = 1;
-
-    @Option(names = {"-d", "--max-depth"}, paramLabel = "D", description = "Deepest recursion for mirror rays, 0 to " + ViewPlane.MAX_DEPTH + " (overrides the scene).")
-    Integer maxDepth;
-
-    @Option(names = "--cutoff", paramLabel = "C",
-            description = "Adaptive ray-tree cutoff (overrides the scene): branches weighing less than C and light "
-                          + "samples adding less than C are not traced; 0 traces the whole tree.")
-    Double cutoff;
-
-    @Option(names = "--encoding", paramLabel = "E",
-            description = "PNG encoding (overrides the scene): srgb, or linear (clamped radiance as the code value, as the report did).")
-    String encoding;
-
     @Option(names = "--view", paramLabel = "VIEW",
             description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
     String view = "shaded";
-
-    @Option(names = "--pass", paramLabel = "PASS",
-            description = "Terms of the first hit (report figures 4 and 6): full, direct, reflection, refraction, "
-                          + "magenta-reflection or no-fresnel. Default: the scene's, else full.")
-    String pass;
-
-    @Option(names = "--accel", paramLabel = "MODE", completionCandidates = OptionNames.AccelerationNames.class,
-            description = "Search structure for the scene's objects: ${COMPLETION-CANDIDATES}. Default: auto (a BVH from "
-                          + Aggregation.AUTO_THRESHOLD + " bounded objects on).")
-    String accel = "auto";
-
-    @Option(names = "--no-skip",
-            description = "Render the scene as given, without the scene analysis: no light, object, term, ray or texture "
-                          + "coordinate is left out, the max depth is the scene's (or --max-depth), every camera ray tests every "
-                          + "object, and --accel auto counts every bounded object. The image is the same; this checks that.")
-    boolean noSkip;
-
-    @Option(names = "--cache-dir", paramLabel = "DIR",
-            description = "Where parsed meshes and their BVHs are cached. Default: $XDG_CACHE_HOME/raytracer/meshes, "
-                          + "or ~/.cache/raytracer/meshes.")
-    Path cacheDir;
-
-    @Option(names = "--cache-max", paramLabel = "SIZE",
-            description = "The most the mesh cache's entries may take together, e.g. 512M or 4G; past it the least recently "
-                          + "used are deleted. Default: $" + MeshCache.MAX_ENV + ", else 1G.")
-    String cacheMax;
-
-    @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
-    boolean noCache;
 
     @Option(names = "--frames", paramLabel = "A-B",
             description = "Render frames A to B of the scene's animation (or one frame, A) in this JVM, the scene read once; "

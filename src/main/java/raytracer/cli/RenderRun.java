@@ -1,33 +1,22 @@
 package raytracer.cli;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
-import raytracer.accel.Aggregation;
-import raytracer.core.PixelFilter;
-import raytracer.core.RayTreeSettings;
-import raytracer.core.ViewPlane;
-import raytracer.core.World;
-import raytracer.image.DisplayEncoding;
+import raytracer.api.ImageSettings;
+import raytracer.api.Scene;
+import raytracer.api.SceneFrame;
 import raytracer.image.FalseColor;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
-import raytracer.io.scene.LoadedScene;
-import raytracer.io.scene.MeshCache;
-import raytracer.io.scene.SceneException;
-import raytracer.io.scene.SceneFile;
 import raytracer.render.RenderStats;
 import raytracer.render.Renderer;
-import raytracer.render.SceneAnalysis;
 import raytracer.render.TileListener;
 import raytracer.render.Workers;
-import raytracer.tracers.BvhCost;
 
 /**
  * One run of the command, on one pool of --threads workers: reads the scene file once, then for
@@ -37,8 +26,6 @@ import raytracer.tracers.BvhCost;
  * atomically. {@link RunReport} prints what it did.
  */
 final class RenderRun {
-    static final String DEFAULT_SCENE_RESOURCE = "/raytracer/scenes/default.yaml";
-
     private final RenderRequest request;
     private final RunReport report;
     /** The terminal's progress bar while the last render runs, for a cancel from the window to clear. */
@@ -62,11 +49,11 @@ final class RenderRun {
     int run() throws Exception {
         try (Workers workers = new Workers(request.threads())) {
             long readStart = System.nanoTime();
-            SceneFile file = workers.call(this::readScene);
+            Scene scene = workers.call(() -> Scene.open(request.scene(), request.options()));
             long readNanos = System.nanoTime() - readStart;
             FrameRange range = request.frames() == null ? new FrameRange(0, 0) : request.frames();
             if (request.frames() != null) {
-                String why = range.whyNotIn(file.frames(), file.animated());
+                String why = range.whyNotIn(scene.file().frames(), scene.file().animated());
                 if (why != null) {
                     throw new ParameterException(commandLine, "--frames " + range.first() + "-" + range.last() + ": " + why);
                 }
@@ -79,7 +66,7 @@ final class RenderRun {
                     if (request.resume() && FrameFiles.complete(out)) {
                         continue;
                     }
-                    renderFrame(file, frame, out, workers, rendered == 0 ? readNanos : 0, frame == range.last());
+                    renderFrame(scene, frame, out, workers, rendered == 0 ? readNanos : 0, frame == range.last());
                     rendered++;
                 }
                 if (window != null) {
@@ -91,21 +78,19 @@ final class RenderRun {
                 }
             }
             if (request.frames() != null && !request.quiet()) {
-                report.animation(file.name(), range, rendered, readNanos, System.nanoTime() - start);
+                report.animation(scene.file().name(), range, rendered, readNanos, System.nanoTime() - start);
             }
             return 0;
         }
     }
 
     /**
-     * Loads, prepares, renders and writes frame {@code frame} of {@code file} to {@code out};
+     * Loads, prepares, renders and writes frame {@code frame} of {@code scene} to {@code out};
      * {@code readNanos} is the time reading the file took, counted in the first frame's load.
      */
-    private void renderFrame(SceneFile file, int frame, Path out, Workers workers, long readNanos, boolean last) throws Exception {
+    private void renderFrame(Scene scene, int frame, Path out, Workers workers, long readNanos, boolean last) throws Exception {
         current = out;
-        long loadStart = System.nanoTime();
-        LoadedScene loaded = workers.call(() -> file.load(frame));
-        long loadNanos = readNanos + System.nanoTime() - loadStart;
+        SceneFrame loaded = scene.load(frame, workers);
         String input = OutputFile.whyInput(out, request.scene(), loaded.report().inputs());
         if (input != null) {
             // found after loading, which names the inputs, and before rendering
@@ -113,57 +98,37 @@ final class RenderRun {
         }
         int warned = loaded.report().warnings().size();
         warnings(loaded.report().warnings());
-        World world = loaded.world();
-        request.overrides().applyTo(world);
-        RayTreeSettings rayTree = request.overrides().rayTree(loaded.rayTree());
-        DisplayEncoding encoding = request.overrides().encoding(loaded.encoding());
-        long prepareStart = System.nanoTime();
-        // the cost view shows the search structure as the scene gives it, and --no-skip renders the
-        // scene as given: without the analysis nothing is left out (the image is the same; --no-skip checks it)
-        SceneAnalysis analysis = request.costView() || !request.analyse() ? null : SceneAnalysis.apply(world, rayTree);
-        workers.call(() -> {
-            world.prepare(objects -> Aggregation.organize(objects, request.accel()));
-            return null;
-        });
-        long prepareNanos = System.nanoTime() - prepareStart;
+        loaded.prepare(workers);
         // what preparing found: a cache entry that failed its checksum, one that could not be written
         List<String> warnings = loaded.report().warnings();
         warnings(warnings.subList(warned, warnings.size()));
-        if (request.costView()) {
-            world.setTracer(BvhCost::new);
-            // counts per pixel, not averages blurred over the neighbours
-            world.setViewPlane(world.viewPlane().withFilter(PixelFilter.BOX));
-        }
-        ViewPlane vp = world.viewPlane();
+        ImageSettings image = loaded.image();
         // every frame has the same size: one film, which the --show window shows frame after frame
         if (film == null) {
-            film = new Film(vp.hres(), vp.vres());
+            film = new Film(image.width(), image.height());
         }
-        // the file's codes: the cost view's false colour is written at exposure 1 through the sRGB curve
-        double exposure = request.costView() ? 1 : vp.exposure();
-        boolean srgb = request.costView() || encoding.srgbCurve();
-        Renderer renderer = new Renderer(world, rayTree, workers, request.seed());
+        Renderer renderer = loaded.renderer(workers);
         this.renderer = renderer;
         String label = request.frames() == null ? "" : "frame " + frame;
         if (request.show()) {
             // the window's type is named only here, so that without --show no AWT class is loaded
             if (window == null) {
-                window = openWindow(film, exposure, srgb);
+                window = openWindow(film, image.exposure(), image.srgb());
             }
             window.startFrame(label);
         }
         RenderStats stats = render(renderer, film, window, label);
-        Film written = write(film, vp, exposure, srgb, out);
+        Film written = write(film, image, out);
         report.droppedSamples(stats);
         if (window != null && last) {
             window.finish(written);
         }
         if (!request.quiet()) {
-            report.summary(stats, out, vp.filter());
+            report.summary(stats, out, image.filter());
         }
         if (request.stats()) {
-            report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
-            report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
+            report.stats(loaded.report(), loaded.world(), readNanos + loaded.loadNanos(), loaded.prepareNanos(), stats);
+            report.skips(loaded.analysis(), stats, request.options().costView() ? "the bvh-cost view shows the scene as given"
                 : "--no-skip: the scene analysis was off, the scene rendered as given");
         }
     }
@@ -180,7 +145,7 @@ final class RenderRun {
     /** The --show window on {@code film}, coding pixels as the file will, telling the progress of the frame being rendered. */
     private ShowWindow openWindow(Film film, double exposure, boolean srgb) throws Exception {
         String scene = request.scene() == null ? "default scene" : request.scene().getFileName().toString();
-        return ShowWindow.open(scene, film, request.costView(), exposure, srgb, () -> renderer.progress(), this::cancel);
+        return ShowWindow.open(scene, film, request.options().costView(), exposure, srgb, () -> renderer.progress(), this::cancel);
     }
 
     /**
@@ -227,31 +192,18 @@ final class RenderRun {
     }
 
     /**
-     * Writes the shaded image, or the cost view's false colour with its legend; returns the film
-     * written (the false colour's, or {@code film}).
+     * Writes the shaded image, or the cost view's false colour with its legend, to {@code out};
+     * returns the film written (the false colour's, or {@code film}).
      */
-    private Film write(Film film, ViewPlane vp, double exposure, boolean srgb, Path out) throws IOException {
+    private Film write(Film film, ImageSettings image, Path out) throws IOException {
         Film written = film;
-        if (request.costView()) {
+        if (request.options().costView()) {
             // the film holds each pixel's mean over its samples
             double[] range = FalseColor.range(film);
-            report.costLegend(range, vp.numSamples());
+            report.costLegend(range, image.viewPlane().numSamples());
             written = FalseColor.apply(film, range[0], range[1]);
         }
-        ImageWriters.write(written, exposure, srgb, out);
+        ImageWriters.write(written, image.exposure(), image.srgb(), out);
         return written;
-    }
-
-    /** The scene file, read once for every frame. */
-    private SceneFile readScene() throws SceneException, IOException {
-        if (request.scene() != null) {
-            return SceneFile.read(request.scene(), request.meshCache() == null ? null : MeshCache.in(request.meshCache(), request.meshCacheMax()));
-        }
-        try (InputStream in = RenderRun.class.getResourceAsStream(DEFAULT_SCENE_RESOURCE)) {
-            if (in == null) {
-                throw new IOException("the embedded default scene is missing from the jar");
-            }
-            return SceneFile.of("default scene", new String(in.readAllBytes(), StandardCharsets.UTF_8));
-        }
     }
 }

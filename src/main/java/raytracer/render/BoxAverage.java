@@ -9,6 +9,9 @@ import raytracer.math.MutableRgb;
  */
 final class BoxAverage implements PixelSink {
     private final Film film;
+    /** The image pixel at the film's top-left corner: (0, 0) for the whole image, a tile's corner for its own film. */
+    private final int left;
+    private final int top;
     private int x;
     private int y;
     private int n;
@@ -17,7 +20,14 @@ final class BoxAverage implements PixelSink {
     private double b;
 
     BoxAverage(Film film) {
+        this(film, 0, 0);
+    }
+
+    /** Into {@code film}, which holds the image's pixels from ({@code left}, {@code top}) on: a tile's own film. */
+    BoxAverage(Film film, int left, int top) {
         this.film = film;
+        this.left = left;
+        this.top = top;
     }
 
     @Override
@@ -40,6 +50,6 @@ final class BoxAverage implements PixelSink {
 
     @Override
     public void endPixel() {
-        film.set(x, y, r / n, g / n, b / n);
+        film.set(x - left, y - top, r / n, g / n, b / n);
     }
 }

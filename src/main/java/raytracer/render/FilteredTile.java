@@ -30,13 +30,22 @@ final class FilteredTile implements PixelSink {
 
     /** For the tile of pixels x0 .. x1 - 1, y0 .. y1 - 1. */
     FilteredTile(PixelFilter filter, int x0, int y0, int x1, int y1) {
+        this(filter, x0, y0, x1, y1, null);
+    }
+
+    /** The same tile with the sums another render left in it ({@link #sums}; null: none yet). */
+    FilteredTile(PixelFilter filter, int x0, int y0, int x1, int y1, double[] sums) {
         this.filter = filter;
         this.reach = filter.reach();
         this.left = x0 - reach;
         this.top = y0 - reach;
         this.columns = x1 - x0 + 2 * reach;
         this.rows = y1 - y0 + 2 * reach;
-        this.sums = new double[4 * columns * rows];
+        if (sums != null && sums.length != 4 * columns * rows) {
+            throw new IllegalArgumentException("the sums of tile " + x0 + ", " + y0 + " hold " + sums.length + " values, not "
+                                               + 4 * columns * rows + " for the " + filter.name() + " filter of reach " + reach);
+        }
+        this.sums = sums != null ? sums : new double[4 * columns * rows];
         this.wx = new double[2 * reach + 1];
         this.wy = new double[2 * reach + 1];
     }
@@ -100,6 +109,11 @@ final class FilteredTile implements PixelSink {
                 film.set(x, y, sums[at] / w, sums[at + 1] / w, sums[at + 2] / w);
             }
         }
+    }
+
+    /** The sums themselves: per pixel of the tile and its margin, row by row, w r, w g, w b and w. */
+    double[] sums() {
+        return sums;
     }
 
     /** The tile's first pixel column and row, without the margin. */

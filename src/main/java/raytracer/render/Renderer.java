@@ -27,7 +27,9 @@ import raytracer.math.Ray;
  * pixel filter that takes the samples ({@link BoxAverage}, the book's; {@link FilteredTile} and
  * {@link FilteredImage}, a wider one). Each worker thread keeps one {@link WorkerScratch}. Every
  * sample value is a function of (seed, pixel, sample index, dimension), so the pixels do not
- * depend on the thread count or the order in which tiles finish.
+ * depend on the thread count or the order in which tiles finish, nor on whether the tiles are
+ * rendered together or apart ({@link #renderTiles}, {@link TileImage}: an image rendered in parts
+ * on several machines).
  */
 public final class Renderer {
     public static final int TILE_SIZE = 32;
@@ -91,7 +93,77 @@ public final class Renderer {
         PixelFilter filter = vp.filter();
         FilteredImage.check(filter);
         List<int[]> tiles = TileOrder.tiles(vp.hres(), vp.vres());
-        pixelsTotal = (long) vp.hres() * vp.vres();
+        long start = System.nanoTime();
+        Frame frame = frame(tiles, film, null, listener);
+        run(frame, null);
+        if (frame.filtered() != null) {
+            FilteredImage.resolve(frame.filtered(), film, filter.reach());
+        }
+        return totals(vp, System.nanoTime() - start, frame.scratches());
+    }
+
+    /** The image's tiles (x0, y0, x1, y1) in the list's order, which {@link #renderTiles} takes indices into. */
+    public static List<int[]> tiles(int width, int height) {
+        return TileOrder.tiles(width, height);
+    }
+
+    /**
+     * Renders tiles {@code indices} of the image's list ({@link #tiles}) into arrays, for an image
+     * rendered in parts (on other machines): each tile's pixels, or a wider filter's sums, which
+     * {@link TileImage#assemble} makes into the image, the same to the bit as {@link #render(Film)}.
+     */
+    public RenderedTiles renderTiles(int[] indices) {
+        tables();
+        ViewPlane vp = world.viewPlane();
+        PixelFilter filter = vp.filter();
+        FilteredImage.check(filter);
+        List<int[]> tiles = TileOrder.tiles(vp.hres(), vp.vres());
+        for (int index : indices) {
+            if (index < 0 || index >= tiles.size()) {
+                throw new IllegalArgumentException("tile " + index + " is not one of the " + tiles.size() + " tiles of a "
+                                                   + vp.hres() + "x" + vp.vres() + " image");
+            }
+        }
+        long start = System.nanoTime();
+        Frame frame = frame(tiles, null, indices, null);
+        run(frame, indices);
+        TilePixels[] out = new TilePixels[indices.length];
+        for (int k = 0; k < indices.length; k++) {
+            int i = indices[k];
+            int[] t = tiles.get(i);
+            out[k] = frame.filtered() != null ? TilePixels.filtered(i, t[0], t[1], t[2], t[3], frame.filtered()[i].sums())
+                : TilePixels.box(i, t[0], t[1], t[2], t[3], pixels(frame.tileFilms()[i]));
+        }
+        return new RenderedTiles(out, totals(vp, System.nanoTime() - start, frame.scratches()));
+    }
+
+    /** A tile's own film as three floats a pixel, row by row. */
+    private static float[] pixels(Film film) {
+        float[] rgb = new float[3 * film.width() * film.height()];
+        for (int y = 0, i = 0; y < film.height(); y++) {
+            for (int x = 0; x < film.width(); x++) {
+                for (int c = 0; c < 3; c++) {
+                    rgb[i++] = film.get(x, y, c);
+                }
+            }
+        }
+        return rgb;
+    }
+
+    /**
+     * The render of {@code tiles} into {@code film}, or (null film) each tile into arrays of its
+     * own; {@code indices} (null: all) are the tiles rendered, for which the camera rays' objects
+     * are found.
+     */
+    private Frame frame(List<int[]> tiles, Film film, int[] indices, TileListener listener) {
+        PixelFilter filter = world.viewPlane().filter();
+        int rendered = indices == null ? tiles.size() : indices.length;
+        long pixels = 0;
+        for (int k = 0; k < rendered; k++) {
+            int[] tile = tiles.get(indices == null ? k : indices[k]);
+            pixels += (long) (tile[2] - tile[0]) * (tile[3] - tile[1]);
+        }
+        pixelsTotal = pixels;
         pixelsDone.set(0);
         Queue<WorkerScratch> scratches = new ConcurrentLinkedQueue<>();
         ThreadLocal<WorkerScratch> scratch = ThreadLocal.withInitial(() -> {
@@ -99,31 +171,38 @@ public final class Renderer {
             scratches.add(s);
             return s;
         });
-        long start = System.nanoTime();
-        Frame frame = new Frame(tiles, film, filter, scratch, filter.isBox() ? null : new FilteredTile[tiles.size()],
-                                TileObjects.of(world, tiles), listener);
-        workers.invoke(new TileRange(index -> renderTile(frame, index), 0, tiles.size()));
-        if (frame.filtered() != null) {
-            FilteredImage.resolve(frame.filtered(), film, filter.reach());
-        }
-        return totals(vp, System.nanoTime() - start, scratches);
+        return new Frame(tiles, film, filter, scratch, scratches, filter.isBox() ? null : new FilteredTile[tiles.size()],
+                         filter.isBox() && film == null ? new Film[tiles.size()] : null, TileObjects.of(world, tiles, indices), listener);
+    }
+
+    /** Renders tiles {@code indices} of the frame's list (null: all) on the workers. */
+    private void run(Frame frame, int[] indices) {
+        int n = indices == null ? frame.tiles().size() : indices.length;
+        workers.invoke(new TileRange(k -> renderTile(frame, indices == null ? k : indices[k]), 0, n));
     }
 
     /**
      * What the tasks of one render share: the tile list, the film, the filter, each worker's
      * scratch, and per tile its filtered sums (null under the box filter, whose pixels go straight
-     * to the film) and the objects its camera rays can hit ({@link TileObjects}; null when the
-     * world is not searched by tile); and who is told of finished tiles (a preview; null for none).
+     * to the film), or, for tiles rendered apart, its own film (null when there is one film), and
+     * the objects its camera rays can hit ({@link TileObjects}; null when the world is not
+     * searched by tile); and who is told of finished tiles (a preview; null for none).
      */
     private record Frame(List<int[]> tiles, Film film, PixelFilter filter, ThreadLocal<WorkerScratch> scratch,
-                         FilteredTile[] filtered, GeometricObject[][] tileObjects, TileListener listener) {
+                         Queue<WorkerScratch> scratches, FilteredTile[] filtered, Film[] tileFilms, GeometricObject[][] tileObjects,
+                         TileListener listener) {
 
         /** Where the samples of tile {@code index} go: the box filter's averages, or the tile's new sums. */
         PixelSink pixels(int index) {
-            if (filtered == null) {
-                return new BoxAverage(film);
-            }
             int[] tile = tiles.get(index);
+            if (filtered == null) {
+                if (tileFilms == null) {
+                    return new BoxAverage(film);
+                }
+                Film own = new Film(tile[2] - tile[0], tile[3] - tile[1]);
+                tileFilms[index] = own;
+                return new BoxAverage(own, tile[0], tile[1]);
+            }
             FilteredTile sums = new FilteredTile(filter, tile[0], tile[1], tile[2], tile[3]);
             filtered[index] = sums;
             return sums;

@@ -27,6 +27,11 @@ final class TileObjects {
      * as they are; null altogether when the world does not search by tile.
      */
     static GeometricObject[][] of(World world, List<int[]> tiles) {
+        return of(world, tiles, null);
+    }
+
+    /** As above, for the tiles of {@code indices} alone (null: all); the others' entries stay null. */
+    static GeometricObject[][] of(World world, List<int[]> tiles, int[] indices) {
         if (!world.searchesByTile()) {
             return null;
         }
@@ -34,7 +39,8 @@ final class TileObjects {
         ViewPlane vp = world.viewPlane();
         Camera camera = world.camera();
         GeometricObject[][] perTile = new GeometricObject[tiles.size()][];
-        for (int i = 0; i < perTile.length; i++) {
+        for (int k = 0; k < (indices == null ? perTile.length : indices.length); k++) {
+            int i = indices == null ? k : indices[k];
             int[] tile = tiles.get(i);
             List<HalfSpace> volume = camera.viewVolume(vp, tile[0], tile[1], tile[2], tile[3]);
             List<GeometricObject> seen = new ArrayList<>();

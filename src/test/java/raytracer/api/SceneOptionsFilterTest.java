@@ -1,4 +1,4 @@
-package raytracer.cli;
+package raytracer.api;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -17,7 +17,7 @@ import raytracer.math.Vector3D;
 import raytracer.samplers.Samplers;
 
 /** --filter and --filter-stddev against the scene's filter. */
-class SceneOverridesFilterTest {
+class SceneOptionsFilterTest {
     @Test
     void theOptionsReplaceTheScenesFilterAsAsked() {
         PixelFilter wide = new Gaussian(1.5);
@@ -45,7 +45,6 @@ class SceneOverridesFilterTest {
         ViewPlane vp = new ViewPlane(4, 4, 1, Samplers.byName("regular"), 1, 1, scene);
         World world = new World(vp, new Pinhole(new Point3D(0, 0, 5), new Point3D(0, 0, 0), new Vector3D(0, 1, 0), 40),
                                 new Ambient(0, RGBColor.WHITE));
-        new SceneOverrides(null, null, null, null, option, null, null, null, null).applyTo(world);
-        return world.viewPlane().filter();
+        return SceneOptions.NONE.withFilter(option.name(), option.stddev()).viewPlane(world.viewPlane()).filter();
     }
 }

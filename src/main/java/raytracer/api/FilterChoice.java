@@ -1,4 +1,4 @@
-package raytracer.cli;
+package raytracer.api;
 
 import raytracer.core.PixelFilter;
 import raytracer.filters.Filters;
@@ -10,10 +10,10 @@ import raytracer.filters.Gaussian;
  * without a width is the scene's own, width and all, when the scene has that filter, else the
  * named filter at its default width.
  */
-record FilterChoice(String name, Double stddev) {
+public record FilterChoice(String name, Double stddev) implements java.io.Serializable {
 
     /** The choice, or IllegalArgumentException saying what is wrong with it. */
-    static FilterChoice parse(String name, Double stddev) {
+    public static FilterChoice parse(String name, Double stddev) {
         if (name != null && !Filters.names().contains(name)) {
             throw new IllegalArgumentException("unknown --filter '" + name + "'; allowed: " + String.join(", ", Filters.names()));
         }
@@ -28,7 +28,7 @@ record FilterChoice(String name, Double stddev) {
     }
 
     /** The filter to render with, given the scene's. */
-    PixelFilter applyTo(PixelFilter scene) {
+    public PixelFilter applyTo(PixelFilter scene) {
         if (name == null && stddev == null) {
             return scene;
         }
