@@ -302,6 +302,38 @@ class ArchitectureTest {
         assertEquals(new TreeSet<>(Set.of("materials", "math", "brdf")), classReferences(bytes));
     }
 
+    /**
+     * The Spark job (src/spark/java, its own source set and jar) sits above the command line: it
+     * renders through the API and spells its options as render does; nothing in src/main uses it
+     * (the main classes compile without Spark).
+     */
+    @Test
+    void theSparkJobUsesTheApiAndNothingUsesIt() throws IOException {
+        Path spark = Path.of("src/spark/java/raytracer/spark");
+        Set<String> allowed = Set.of("api", "cli", "render", "image", "io.scene", "core", "math");
+        List<String> violations = new ArrayList<>();
+        int files = 0;
+        try (Stream<Path> paths = Files.walk(spark)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                files++;
+                for (String used : sourceReferences(Files.readString(file))) {
+                    if (!used.equals("spark") && !allowed.contains(used)) {
+                        violations.add(file + " uses raytracer." + used);
+                    }
+                }
+            }
+        }
+        try (Stream<Path> paths = Files.walk(SOURCES)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                if (sourceReferences(Files.readString(file)).contains("spark") || Files.readString(file).contains("import org.apache.spark")) {
+                    violations.add(file + " uses the Spark job or Spark");
+                }
+            }
+        }
+        assertTrue(files >= 5, "the Spark job's sources were not found in " + spark.toAbsolutePath());
+        assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", violations));
+    }
+
     /** The chart library stays behind raytracer.image.chart, so it can be swapped in one place. */
     @Test
     void onlyTheChartPackageUsesTheChartLibrary() throws IOException {

@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Test;
  */
 class DocsTest {
     private static final List<String> SOURCE_ROOTS = List.of("src/main/java", "src/test/java", "src/jmh/java", "src/exercises/java",
-                                                             "src/solutions/java");
+                                                             "src/solutions/java", "src/spark/java");
     /** [text](target), a target without spaces; images too. */
     private static final Pattern LINK = Pattern.compile("\\[([^\\]]*)\\]\\(([^)\\s]+)\\)");
     private static final Pattern LINES = Pattern.compile("L(\\d+)(?:-L(\\d+))?");

@@ -14,9 +14,10 @@ import java.util.regex.Pattern;
 
 /**
  * The files of an animation: {@code -o} as a pattern holding one {@code %d} (or {@code %04d}) for
- * the frame number, and whether a frame's file is complete, for {@code --resume}.
+ * the frame number, and whether a frame's file is complete, for {@code --resume}. The Spark job
+ * names its frames alike.
  */
-final class FrameFiles {
+public final class FrameFiles {
     /** One printf integer conversion, with an optional zero flag and width. */
     private static final Pattern FRAME = Pattern.compile("%(0?[1-9]?)d");
     /** The last 12 bytes of every PNG: the IEND chunk, empty, with its CRC. */
@@ -36,7 +37,7 @@ final class FrameFiles {
      * Why {@code pattern} cannot name the frames, or null: it must hold exactly one {@code %d},
      * {@code %0Nd} or {@code %Nd}, and any other {@code %} doubled.
      */
-    static String whyNotPattern(String pattern) {
+    public static String whyNotPattern(String pattern) {
         int conversions = 0;
         for (int i = 0; i < pattern.length(); i++) {
             if (pattern.charAt(i) != '%') {
@@ -59,7 +60,12 @@ final class FrameFiles {
 
     /** The file of frame {@code frame}. */
     static Path name(String pattern, int frame) {
-        return Path.of(String.format(Locale.ROOT, pattern, frame));
+        return Path.of(format(pattern, frame));
+    }
+
+    /** The name of frame {@code frame}: {@code pattern} (checked by {@link #whyNotPattern}) with the number put in. */
+    public static String format(String pattern, int frame) {
+        return String.format(Locale.ROOT, pattern, frame);
     }
 
     /**

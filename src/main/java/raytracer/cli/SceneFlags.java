@@ -76,6 +76,11 @@ public final class SceneFlags {
     @Option(names = "--no-cache", description = "Parse and build every mesh, reading and writing no mesh cache.")
     boolean noCache;
 
+    /** True when neither --cache-dir nor --no-cache is given: the mesh cache is in the user's default folder (on each machine its own). */
+    public boolean defaultMeshCache() {
+        return cacheDir == null && !noCache;
+    }
+
     /**
      * The options checked and made plain ({@code costView}: --view bvh-cost, an option of render's
      * alone); a bad value is a usage error of {@code commandLine}, found before any scene is read.

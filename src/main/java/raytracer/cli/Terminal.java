@@ -11,7 +11,7 @@ import java.io.Writer;
  * Every character but newline and tab that is a control character or an invisible format
  * character is written as an escape ({@code \x1b}, {@code \u202e}); a message line is bounded.
  */
-final class Terminal {
+public final class Terminal {
     /** The longest message line printed; past it the line is cut and says how much was left out. */
     static final int MAX_LINE = 1000;
 
@@ -19,7 +19,7 @@ final class Terminal {
     }
 
     /** A writer that escapes as the class comment says, around {@code out}. */
-    static Writer escaping(Writer out) {
+    public static Writer escaping(Writer out) {
         return new FilterWriter(out) {
             @Override
             public void write(int c) throws IOException {
@@ -58,7 +58,7 @@ final class Terminal {
     }
 
     /** A message on one line of at most {@link #MAX_LINE} characters. */
-    static String line(String message) {
+    public static String line(String message) {
         String line = message.replace('\n', ' ');
         if (line.length() <= MAX_LINE) {
             return line;

@@ -20,8 +20,7 @@ public final class ImageWriters {
 
     /** True when the file name ends in a supported extension. */
     public static boolean isSupported(Path path) {
-        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
-        return EXTENSIONS.stream().anyMatch(name::endsWith);
+        return isSupported(path.getFileName().toString());
     }
 
     /** Writes the film atomically: a failure never leaves a broken file in place of a good one. */
@@ -34,20 +33,41 @@ public final class ImageWriters {
      * its code values, as the report's images do (PFM output is linear either way).
      */
     public static void write(Film film, double exposure, boolean srgb, Path path) throws IOException {
-        String name = path.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (name.endsWith(".png")) {
+        String name = path.getFileName().toString();
+        if (!isSupported(name)) {
+            throw new IOException("unsupported output format for " + path + " (use one of " + EXTENSIONS + ")");
+        }
+        AtomicFile.write(path, out -> encode(film, exposure, srgb, name, out));
+    }
+
+    /** True when a file name ends in a supported extension. */
+    public static boolean isSupported(String name) {
+        String lower = name.toLowerCase(Locale.ROOT);
+        return EXTENSIONS.stream().anyMatch(lower::endsWith);
+    }
+
+    /**
+     * The file's bytes onto {@code stream} (flushed, not closed), as {@link #write(Film, double, boolean, Path)}
+     * writes them, in the format of the file name {@code name}'s extension: for an image stored
+     * elsewhere (a file system of a cluster).
+     */
+    public static void encode(Film film, double exposure, boolean srgb, String name, OutputStream stream) throws IOException {
+        String lower = name.toLowerCase(Locale.ROOT);
+        if (lower.endsWith(".png")) {
             DisplayCodes codes = new DisplayCodes(exposure, srgb);
-            AtomicFile.write(path, out -> PngEncoder.write(film.width(), film.height(), (y, rgb) -> {
+            BufferedOutputStream out = new BufferedOutputStream(stream);
+            PngEncoder.write(film.width(), film.height(), (y, rgb) -> {
                 for (int x = 0, i = 0; x < film.width(); x++) {
                     for (int c = 0; c < 3; c++) {
                         rgb[i++] = (byte) codes.code(film.get(x, y, c));
                     }
                 }
-            }, new BufferedOutputStream(out)));
-        } else if (name.endsWith(".pfm")) {
-            AtomicFile.write(path, out -> writePfm(film, exposure, out));
+            }, out);
+            out.flush();
+        } else if (lower.endsWith(".pfm")) {
+            writePfm(film, exposure, stream);
         } else {
-            throw new IOException("unsupported output format for " + path + " (use one of " + EXTENSIONS + ")");
+            throw new IOException("unsupported output format for " + name + " (use one of " + EXTENSIONS + ")");
         }
     }
 

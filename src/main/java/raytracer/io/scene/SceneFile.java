@@ -72,6 +72,14 @@ public final class SceneFile {
     }
 
     /**
+     * The text of the scene file {@code file}, checked as {@link #read} checks it (UTF-8, at most
+     * the characters a scene may hold); a SceneException says why it cannot be read.
+     */
+    public static String readText(Path file) throws SceneException {
+        return SceneLoader.text(file);
+    }
+
+    /**
      * The scene file {@code file} whose text is {@code text}, already read (by another machine: a
      * render farm's driver sends it); relative paths start at {@code file}'s folder.
      */

@@ -1,0 +1,106 @@
+package raytracer.spark;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.util.Collection;
+import java.util.UUID;
+import org.apache.hadoop.conf.Configuration;
+import org.apache.hadoop.fs.FSDataOutputStream;
+import org.apache.hadoop.fs.FileStatus;
+import org.apache.hadoop.fs.FileSystem;
+import org.apache.hadoop.fs.LocalFileSystem;
+import org.apache.hadoop.fs.Path;
+
+/**
+ * Images on any Hadoop file system ({@code file:}, {@code hdfs:}, {@code s3a:}), written under
+ * fixed names and atomically: to a temporary file beside the target, named after the run
+ * ({@code .frame-0001.png.<run>-<random>.partial}), then renamed. A retried or speculative task
+ * writes the same bytes to the same name, so whichever rename lands, the file is right; a task
+ * killed while writing leaves only a temporary file, which the driver deletes at the end of the run
+ * ({@link #removePartials}). Local files are written without Hadoop's checksum side files.
+ */
+final class Outputs {
+    private Outputs() {
+    }
+
+    /** The file system of {@code path}; the local one without its checksum files. */
+    static FileSystem fileSystem(Path path, Configuration conf) throws IOException {
+        FileSystem fs = path.getFileSystem(conf);
+        return fs instanceof LocalFileSystem local ? local.getRaw() : fs;
+    }
+
+    /** {@code name} made absolute on its file system (a relative name is the driver's working folder), as a URI string. */
+    static String qualify(String name, Configuration conf) throws IOException {
+        Path path = new Path(name);
+        return fileSystem(path, conf).makeQualified(path).toString();
+    }
+
+    /** The bytes of a file, written by {@code body}. */
+    interface Body {
+        void write(OutputStream out) throws IOException;
+    }
+
+    /** Writes {@code target} atomically through a temporary file of run {@code runId}; returns the bytes written. */
+    static long write(String target, String runId, Configuration conf, Body body) throws IOException {
+        Path file = new Path(target);
+        FileSystem fs = fileSystem(file, conf);
+        Path partial = new Path(file.getParent(), "." + file.getName() + "." + runId + "-" + UUID.randomUUID() + ".partial");
+        long size;
+        try {
+            try (FSDataOutputStream out = fs.create(partial, false)) {
+                body.write(out);
+                out.flush();
+                size = out.getPos();
+            }
+            if (!fs.rename(partial, file)) {
+                // a file system whose rename does not replace (HDFS): another attempt of this task wrote the same bytes first
+                if (!fs.exists(file) || fs.getFileStatus(file).getLen() != size) {
+                    throw new IOException("cannot rename " + partial + " to " + file);
+                }
+                fs.delete(partial, false);
+            }
+        } catch (IOException | RuntimeException e) {
+            try {
+                fs.delete(partial, false);
+            } catch (IOException ignored) {
+                // the driver removes what is left at the end of the run
+            }
+            throw e;
+        }
+        return size;
+    }
+
+    /** Leaves a temporary file of run {@code runId} beside {@code target}, as a writer killed mid-file does (a test's hook). */
+    static void leavePartial(String target, String runId, Configuration conf) throws IOException {
+        Path file = new Path(target);
+        FileSystem fs = fileSystem(file, conf);
+        try (FSDataOutputStream out = fs.create(new Path(file.getParent(), "." + file.getName() + "." + runId + "-hook.partial"), true)) {
+            out.write(new byte[] {'P', 'N'});
+        }
+    }
+
+    /** Deletes the temporary files of run {@code runId} in the folders of {@code targets}; returns how many. */
+    static int removePartials(Collection<String> targets, String runId, Configuration conf) throws IOException {
+        int removed = 0;
+        for (String folder : targets.stream().map(t -> new Path(t).getParent().toString()).distinct().toList()) {
+            Path dir = new Path(folder);
+            FileSystem fs = fileSystem(dir, conf);
+            if (!fs.exists(dir)) {
+                continue;
+            }
+            for (FileStatus status : fs.listStatus(dir)) {
+                String name = status.getPath().getName();
+                if (name.startsWith(".") && name.endsWith(".partial") && name.contains("." + runId + "-")) {
+                    removed += fs.delete(status.getPath(), false) ? 1 : 0;
+                }
+            }
+        }
+        return removed;
+    }
+
+    /** Makes the folder of {@code target}. */
+    static void makeFolder(String target, Configuration conf) throws IOException {
+        Path file = new Path(target);
+        fileSystem(file, conf).mkdirs(file.getParent());
+    }
+}
