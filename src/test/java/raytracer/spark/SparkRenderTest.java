@@ -1,0 +1,163 @@
+package raytracer.spark;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+import org.apache.spark.SparkConf;
+import org.apache.spark.api.java.JavaSparkContext;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import raytracer.cli.RenderCommand;
+
+/**
+ * The render on Spark, in local mode with two cores (a task may fail once and be retried), against
+ * the command line: a still, as runs of its tiles put together on the driver, and a short
+ * animation, a frame per task written by the tasks, are the files render writes, byte for byte,
+ * under the box and a Gaussian filter; a task whose first attempt fails (a test's hook, after
+ * leaving a temporary file as a killed writer would) is retried, the bytes the same and no
+ * temporary file left; a scene error is one line. One Spark context serves every test.
+ */
+class SparkRenderTest {
+    private static JavaSparkContext sc;
+
+    @TempDir
+    Path dir;
+
+    @BeforeAll
+    static void startSpark() {
+        SparkConf conf = new SparkConf().setMaster("local[2,2]").setAppName("SparkRenderTest")
+            .set("spark.ui.enabled", "false").set("spark.driver.host", "127.0.0.1");
+        sc = new JavaSparkContext(conf);
+    }
+
+    @AfterAll
+    static void stopSpark() {
+        if (sc != null) {
+            sc.stop();
+        }
+    }
+
+    record Result(int code, String err) {
+    }
+
+    private static Result spark(String... args) {
+        StringWriter err = new StringWriter();
+        int code = SparkRender.run(sc, new PrintWriter(err, true), args);
+        return new Result(code, err.toString());
+    }
+
+    private static void render(String... args) {
+        StringWriter err = new StringWriter();
+        assertEquals(0, RenderCommand.run(new PrintWriter(err, true), args), err.toString());
+    }
+
+    private static String[] with(String[] args, String... more) {
+        return Stream.concat(Stream.of(args), Stream.of(more)).toArray(String[]::new);
+    }
+
+    @ParameterizedTest(name = "--filter {0}")
+    @ValueSource(strings = {"box", "gaussian"})
+    void aStillIsTheFileRenderWrites(String filter) throws IOException {
+        String[] options = {"scenes/arealight-spheres.yaml", "-W", "70", "-H", "45", "--spp", "4", "--filter", filter,
+                            "--filter-stddev", filter.equals("gaussian") ? "1.5" : "0.5", "--no-cache"};
+        if (filter.equals("box")) {
+            options = new String[] {"scenes/arealight-spheres.yaml", "-W", "70", "-H", "45", "--spp", "4", "--no-cache"};
+        }
+        render(with(options, "-o", dir.resolve("local.pfm").toString(), "-q"));
+        Result r = spark(with(options, "-o", dir.resolve("spark.pfm").toString(), "--tasks", "4"));
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("4 tasks (4 tile runs per frame"), r.err());
+        assertArrayEquals(Files.readAllBytes(dir.resolve("local.pfm")), Files.readAllBytes(dir.resolve("spark.pfm")));
+        render(with(options, "-o", dir.resolve("local.png").toString(), "-q"));
+        assertEquals(0, spark(with(options, "-o", dir.resolve("spark.png").toString(), "-q")).code());
+        assertArrayEquals(Files.readAllBytes(dir.resolve("local.png")), Files.readAllBytes(dir.resolve("spark.png")));
+    }
+
+    @Test
+    void anAnimationIsTheFilesRenderWrites() throws IOException {
+        String[] options = {"scenes/turntable-bunny.yaml", "-W", "48", "-H", "36", "--spp", "1", "--frames", "3-6",
+                            "--cache-dir", dir.resolve("meshes").toString()};
+        render(with(options, "-o", dir.resolve("local-%02d.png").toString(), "-q"));
+        Result r = spark(with(options, "-o", dir.resolve("spark-%02d.png").toString()));
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("4 tasks (a task per frame"), r.err());
+        assertTrue(r.err().contains("SnakeYAML from"), r.err());
+        for (int f = 3; f <= 6; f++) {
+            String name = String.format("-%02d.png", f);
+            assertTrue(r.err().contains("wrote file:" + dir.resolve("spark" + name)), r.err());
+            assertArrayEquals(Files.readAllBytes(dir.resolve("local" + name)), Files.readAllBytes(dir.resolve("spark" + name)), "frame " + f);
+        }
+        // one frame, fewer than the cores: its tile runs are put together on the driver
+        Result one = spark(with(new String[] {"scenes/turntable-bunny.yaml", "-W", "48", "-H", "36", "--spp", "1", "--frames", "5",
+                                              "--cache-dir", dir.resolve("meshes").toString()}, "-o", dir.resolve("one-%02d.png").toString()));
+        assertEquals(0, one.code(), one.err());
+        assertTrue(one.err().contains("tile runs per frame"), one.err());
+        assertArrayEquals(Files.readAllBytes(dir.resolve("local-05.png")), Files.readAllBytes(dir.resolve("one-05.png")));
+    }
+
+    @Test
+    void aTaskThatFailsItsFirstAttemptIsRetriedWithTheSameBytes() throws IOException {
+        String[] options = {"scenes/default.yaml", "-W", "64", "-H", "40", "--spp", "1"};
+        render(with(options, "-o", dir.resolve("local-0.png").toString(), "-q"));
+        sc.setLocalProperty(FrameTask.FAIL_FIRST_ATTEMPT, "1");
+        try {
+            // the default scene is a still: frame 0 by --tasks 3 runs; then a 3-frame animation, task 1 writing frame 1
+            Result still = spark(with(options, "-o", dir.resolve("still.png").toString(), "--tasks", "3"));
+            assertEquals(0, still.code(), still.err());
+            assertArrayEquals(Files.readAllBytes(dir.resolve("local-0.png")), Files.readAllBytes(dir.resolve("still.png")));
+            Path anim = Files.writeString(dir.resolve("spin.yaml"), Files.readString(Path.of("scenes/default.yaml"))
+                + "\nanimation: {frames: 3, camera: {orbit: {degrees: 30}}}\n");
+            render(anim.toString(), "-W", "64", "-H", "40", "--spp", "1", "--frames", "0-2", "-o", dir.resolve("a-local-%d.png").toString(), "-q");
+            Result r = spark(anim.toString(), "-W", "64", "-H", "40", "--spp", "1", "--frames", "0-2", "--tasks", "3", "-o",
+                             dir.resolve("a-spark-%d.png").toString());
+            assertEquals(0, r.code(), r.err());
+            assertTrue(still.err().contains("1 failed attempt retried") && r.err().contains("1 failed attempt retried"),
+                       still.err() + r.err());
+            for (int f = 0; f < 3; f++) {
+                assertArrayEquals(Files.readAllBytes(dir.resolve("a-local-" + f + ".png")), Files.readAllBytes(dir.resolve("a-spark-" + f + ".png")));
+            }
+        } finally {
+            sc.setLocalProperty(FrameTask.FAIL_FIRST_ATTEMPT, null);
+        }
+        List<String> partial = new ArrayList<>();
+        try (Stream<Path> files = Files.list(dir)) {
+            files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".partial")).forEach(partial::add);
+        }
+        assertEquals(List.of(), partial, "temporary files left");
+    }
+
+    @Test
+    void aSceneErrorIsOneLine() throws IOException {
+        Path syntax = Files.writeString(dir.resolve("syntax.yaml"), "objects:\n  - {type: sphere, center: [0, 0, 0]\n");
+        assertOneLine(spark(syntax.toString(), "-o", dir.resolve("x.png").toString()), 1, "syntax.yaml:3:1: syntax error");
+        // found by the executors, which read the meshes: the driver reads only the image settings
+        Path mesh = Files.writeString(dir.resolve("mesh.yaml"), "image: {width: 40, height: 30}\nobjects:\n  - {type: mesh, file: gone.obj}\n");
+        assertOneLine(spark(mesh.toString(), "-o", dir.resolve("x.png").toString(), "--no-cache"), 1, "gone.obj");
+        assertFalse(Files.exists(dir.resolve("x.png")));
+        assertOneLine(spark("scenes/default.yaml", "--frames", "0-3", "-o", dir.resolve("f-%d.png").toString()), 2,
+                      "the scene has no animation section");
+        assertOneLine(spark("scenes/default.yaml", "-o", dir.resolve("x.jpg").toString()), 2, "unsupported extension");
+        assertOneLine(spark("scenes/default.yaml", "--spp", "0"), 2, "--spp must be 1 to");
+    }
+
+    private static void assertOneLine(Result r, int code, String fragment) {
+        assertEquals(code, r.code(), r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        assertTrue(r.err().startsWith("render-spark: error: ") && r.err().contains(fragment), r.err());
+        assertFalse(r.err().contains("\tat "), r.err());
+    }
+}
