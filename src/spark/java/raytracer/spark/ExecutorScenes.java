@@ -29,9 +29,9 @@ final class ExecutorScenes {
     private ExecutorScenes() {
     }
 
-    /** The job's scene, read on the first call in this JVM. */
-    static Scene scene(Job job) throws Exception {
-        return memo(SCENES, job.key, () -> {
+    /** The job's scene, read on the first call in this JVM; {@code took[0]} gets the time the read took if this call read it. */
+    static Scene scene(Job job, long[] took) throws Exception {
+        return memo(SCENES, job.key, took, () -> {
             SceneOptions options = job.options;
             if (job.executorMeshCache) {
                 // the executor's own default folder: the driver's home need not exist here
@@ -45,9 +45,9 @@ final class ExecutorScenes {
      * Frame {@code frame} of the job's scene, loaded and prepared on {@code workers} by the first
      * task that asks; the tile runs of a frame share it (a prepared world is read-only while rendering).
      */
-    static SceneFrame prepared(Job job, int frame, Workers workers) throws Exception {
-        Scene scene = scene(job);
-        return memo(FRAMES, job.key + "\nframe " + frame, () -> {
+    static SceneFrame prepared(Job job, int frame, Workers workers, long[] took) throws Exception {
+        Scene scene = scene(job, took);
+        return memo(FRAMES, job.key + "\nframe " + frame, new long[1], () -> {
             SceneFrame loaded = scene.load(frame, workers);
             loaded.prepare(workers);
             return loaded;
@@ -59,8 +59,11 @@ final class ExecutorScenes {
         T run() throws Exception;
     }
 
-    /** The value of {@code key} in {@code cache}, made by {@code load} once; a failed load is forgotten, so a retry loads again. */
-    private static <T> T memo(Map<String, CompletableFuture<T>> cache, String key, Load<T> load) throws Exception {
+    /**
+     * The value of {@code key} in {@code cache}, made by {@code load} once (the time it took in
+     * {@code took[0]}, for the call that made it); a failed load is forgotten, so a retry loads again.
+     */
+    private static <T> T memo(Map<String, CompletableFuture<T>> cache, String key, long[] took, Load<T> load) throws Exception {
         CompletableFuture<T> future;
         boolean mine = false;
         synchronized (cache) {
@@ -77,8 +80,10 @@ final class ExecutorScenes {
             }
         }
         if (mine) {
+            long start = System.nanoTime();
             try {
                 future.complete(load.run());
+                took[0] = System.nanoTime() - start;
             } catch (Exception | Error e) {
                 future.completeExceptionally(e);
                 synchronized (cache) {

@@ -39,21 +39,23 @@ final class FrameTask implements Function<int[], byte[]> {
 
     @Override
     public byte[] call(int[] task) throws Exception {
+        long start = System.nanoTime();
         int frame = task[0];
         TaskContext context = TaskContext.get();
+        long[] sceneNanos = new long[1];
         int threads = job.threads > 0 ? job.threads : context == null ? 1 : Math.max(1, context.cpus());
         try (Workers workers = new Workers(threads)) {
             if (task[1] < 0) {
-                return whole(frame, workers, context);
+                return whole(frame, workers, context, sceneNanos, start);
             }
             int[] tiles = new int[task[2] - task[1]];
             for (int i = 0; i < tiles.length; i++) {
                 tiles[i] = task[1] + i;
             }
-            SceneFrame prepared = ExecutorScenes.prepared(job, frame, workers);
+            SceneFrame prepared = ExecutorScenes.prepared(job, frame, workers, sceneNanos);
             failIfHooked(context, null);
             RenderedTiles rendered = prepared.renderer(workers).renderTiles(tiles);
-            return TaskResult.tiles(frame, rendered.tiles(), rendered.stats(), yamlSource());
+            return TaskResult.tiles(frame, rendered.tiles(), rendered.stats(), sceneNanos[0], System.nanoTime() - start, yamlSource());
         } catch (SceneException e) {
             return TaskResult.failed(frame, e.getMessage(), yamlSource());
         } catch (IllegalStateException e) {
@@ -66,8 +68,8 @@ final class FrameTask implements Function<int[], byte[]> {
     }
 
     /** Renders frame {@code frame} whole and writes its file atomically. */
-    private byte[] whole(int frame, Workers workers, TaskContext context) throws Exception {
-        Scene scene = ExecutorScenes.scene(job);
+    private byte[] whole(int frame, Workers workers, TaskContext context, long[] sceneNanos, long start) throws Exception {
+        Scene scene = ExecutorScenes.scene(job, sceneNanos);
         SceneFrame loaded = scene.load(frame, workers);
         loaded.prepare(workers);
         ImageSettings image = loaded.image();
@@ -79,7 +81,7 @@ final class FrameTask implements Function<int[], byte[]> {
         long bytes = Outputs.write(target, job.runId, conf,
                                    out -> ImageWriters.encode(film, image.exposure(), image.srgb(), new org.apache.hadoop.fs.Path(target).getName(),
                                                               out));
-        return TaskResult.written(frame, target, bytes, stats, yamlSource());
+        return TaskResult.written(frame, target, bytes, stats, sceneNanos[0], System.nanoTime() - start, yamlSource());
     }
 
     private void failIfHooked(TaskContext context, String target) throws Exception {

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.Set;
 import org.apache.spark.scheduler.SparkListener;
 import org.apache.spark.scheduler.SparkListenerTaskEnd;
+import org.apache.spark.scheduler.SparkListenerTaskStart;
 
 /**
  * The driver's progress line: tasks done of the job's (a task counted once, however many attempts
@@ -25,6 +26,7 @@ final class Progress extends SparkListener {
     private final Set<Integer> done = new HashSet<>();
     private int failedAttempts;
     private long printed = start;
+    private long firstStart = -1;
 
     /** Reports on {@code err} (nothing when {@code quiet}) the {@code total} tasks of the job, each rendering a {@code unit}. */
     Progress(PrintWriter err, int total, String unit, boolean quiet) {
@@ -32,6 +34,18 @@ final class Progress extends SparkListener {
         this.total = total;
         this.unit = unit;
         this.quiet = quiet;
+    }
+
+    @Override
+    public synchronized void onTaskStart(SparkListenerTaskStart task) {
+        if (firstStart < 0) {
+            firstStart = System.nanoTime() - start;
+        }
+    }
+
+    /** How long after the job was submitted its first task started (executors being launched, or waited for); -1 before. */
+    synchronized long firstStartNanos() {
+        return firstStart;
     }
 
     @Override

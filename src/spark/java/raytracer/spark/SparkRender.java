@@ -261,12 +261,19 @@ public final class SparkRender implements Callable<Integer> {
         Map<Integer, List<TilePixels>> tiles = new TreeMap<>();
         Map<Integer, String> written = new TreeMap<>();
         Map<Integer, Long> sizes = new TreeMap<>();
+        long jobNanos = System.nanoTime() - start;
         Set<String> yaml = new TreeSet<>();
         long nonFinite = 0;
+        long taskNanos = 0;
+        long sceneNanos = 0;
+        int sceneReads = 0;
         for (byte[] bytes : results) {
             TaskResult r = TaskResult.decode(bytes);
             yaml.add(r.yaml);
             nonFinite += r.nonFiniteSamples;
+            taskNanos += r.taskNanos;
+            sceneNanos += r.sceneNanos;
+            sceneReads += r.sceneNanos > 0 ? 1 : 0;
             switch (r.kind) {
                 case TaskResult.FAILED -> throw new SceneException(r.text);
                 case TaskResult.WRITTEN -> {
@@ -276,6 +283,7 @@ public final class SparkRender implements Callable<Integer> {
                 default -> tiles.computeIfAbsent(r.frame, f -> new ArrayList<>()).addAll(r.tiles);
             }
         }
+        long assembly = System.nanoTime();
         for (Map.Entry<Integer, List<TilePixels>> frame : tiles.entrySet()) {
             Film film = new Film(image.width(), image.height());
             TileImage.assemble(frame.getValue(), image.filter(), film);
@@ -285,6 +293,7 @@ public final class SparkRender implements Callable<Integer> {
                                                     o -> ImageWriters.encode(film, image.exposure(), image.srgb(), name, o)));
             written.put(frame.getKey(), target);
         }
+        long assemblyNanos = System.nanoTime() - assembly;
         Outputs.removePartials(List.of(outputs), job.runId, hadoop);
         if (nonFinite > 0) {
             err.println("render-spark: warning: " + nonFinite + " non-finite sample" + (nonFinite == 1 ? "" : "s")
@@ -295,6 +304,14 @@ public final class SparkRender implements Callable<Integer> {
             yaml.add("driver " + FrameTask.yamlSource());
             err.println(summary(range, animation, image, plan.size(), runs, progress.failedAttempts(2000), cores, System.nanoTime() - start,
                                 contextNanos, yaml));
+            // what the model of docs/distributed.md is made of: scene reads, the tasks' own time, the driver's part
+            err.printf(java.util.Locale.ROOT, "render-spark: timings: job %.3f s, first task started after %.3f s, tasks %.3f s in all "
+                       + "(%.1f ms a task), %d scene read%s on executors (%.3f s each), %s put together and written by the driver "
+                       + "in %.3f s%n",
+                       jobNanos / 1e9, progress.firstStartNanos() / 1e9, taskNanos / 1e9, taskNanos / 1e6 / plan.size(), sceneReads,
+                       sceneReads == 1 ? "" : "s",
+                       sceneReads == 0 ? 0 : sceneNanos / 1e9 / sceneReads, tiles.size() == 1 ? "1 frame" : tiles.size() + " frames",
+                       assemblyNanos / 1e9);
         }
         return 0;
     }
@@ -313,9 +330,9 @@ public final class SparkRender implements Callable<Integer> {
             }
         }
         return String.format(java.util.Locale.ROOT, "render-spark: %s of %s, %dx%d, %d spp: %d tasks (%s, %d failed attempt%s retried) "
-                             + "on %d cores in %s (the Spark context started in %s); SnakeYAML from %s on the driver, from %s on the executors",
+                             + "on %d cores in %s (the Spark context started in %.3f s); SnakeYAML from %s on the driver, from %s on the executors",
                              what, scene == null ? "the default scene" : scene, image.width(), image.height(), image.viewPlane().numSamples(),
                              taskCount, split, failed, failed == 1 ? "" : "s", cores, Progress.time(nanos / 1e9),
-                             Progress.time(contextNanos / 1e9), driver, String.join(" and ", executors));
+                             contextNanos / 1e9, driver, String.join(" and ", executors));
     }
 }

@@ -26,11 +26,14 @@ final class TaskResult {
     final long primaryRays;
     final long nonFiniteSamples;
     final long renderNanos;
+    /** The time this task spent reading the scene (0 when the executor had it), and the whole task's time. */
+    final long sceneNanos;
+    final long taskNanos;
     final String yaml;
     final List<TilePixels> tiles;
 
     private TaskResult(int kind, int frame, String text, long bytes, long primaryRays, long nonFiniteSamples, long renderNanos,
-                       String yaml, List<TilePixels> tiles) {
+                       long sceneNanos, long taskNanos, String yaml, List<TilePixels> tiles) {
         this.kind = kind;
         this.frame = frame;
         this.text = text;
@@ -38,31 +41,33 @@ final class TaskResult {
         this.primaryRays = primaryRays;
         this.nonFiniteSamples = nonFiniteSamples;
         this.renderNanos = renderNanos;
+        this.sceneNanos = sceneNanos;
+        this.taskNanos = taskNanos;
         this.yaml = yaml;
         this.tiles = tiles;
     }
 
     /** Frame {@code frame} written whole to {@code file}, {@code bytes} long. */
-    static byte[] written(int frame, String file, long bytes, RenderStats stats, String yaml) {
-        return new TaskResult(WRITTEN, frame, file, bytes, stats.primaryRays(), stats.nonFiniteSamples(), stats.wallNanos(), yaml,
-                              List.of()).encode();
+    static byte[] written(int frame, String file, long bytes, RenderStats stats, long sceneNanos, long taskNanos, String yaml) {
+        return new TaskResult(WRITTEN, frame, file, bytes, stats.primaryRays(), stats.nonFiniteSamples(), stats.wallNanos(), sceneNanos,
+                              taskNanos, yaml, List.of()).encode();
     }
 
     /** Tiles of frame {@code frame}. */
-    static byte[] tiles(int frame, TilePixels[] tiles, RenderStats stats, String yaml) {
-        return new TaskResult(TILES, frame, "", 0, stats.primaryRays(), stats.nonFiniteSamples(), stats.wallNanos(), yaml,
-                              List.of(tiles)).encode();
+    static byte[] tiles(int frame, TilePixels[] tiles, RenderStats stats, long sceneNanos, long taskNanos, String yaml) {
+        return new TaskResult(TILES, frame, "", 0, stats.primaryRays(), stats.nonFiniteSamples(), stats.wallNanos(), sceneNanos,
+                              taskNanos, yaml, List.of(tiles)).encode();
     }
 
     /** A scene error: its message. */
     static byte[] failed(int frame, String message, String yaml) {
-        return new TaskResult(FAILED, frame, message, 0, 0, 0, 0, yaml, List.of()).encode();
+        return new TaskResult(FAILED, frame, message, 0, 0, 0, 0, 0, 0, yaml, List.of()).encode();
     }
 
     private byte[] encode() {
         byte[] textBytes = text.getBytes(StandardCharsets.UTF_8);
         byte[] yamlBytes = yaml.getBytes(StandardCharsets.UTF_8);
-        long size = 5L * 4 + 4 * 8 + textBytes.length + yamlBytes.length;
+        long size = 5L * 4 + 6 * 8 + textBytes.length + yamlBytes.length;
         for (TilePixels t : tiles) {
             size += 4 * 6 + 4 + (t.isBox() ? 4L * t.rgb().length : 8L * t.sums().length);
         }
@@ -71,6 +76,7 @@ final class TaskResult {
         }
         ByteBuffer out = ByteBuffer.allocate((int) size);
         out.putInt(kind).putInt(frame).putLong(bytes).putLong(primaryRays).putLong(nonFiniteSamples).putLong(renderNanos);
+        out.putLong(sceneNanos).putLong(taskNanos);
         out.putInt(textBytes.length).put(textBytes).putInt(yamlBytes.length).put(yamlBytes);
         out.putInt(tiles.size());
         for (TilePixels t : tiles) {
@@ -96,6 +102,8 @@ final class TaskResult {
         long primary = in.getLong();
         long nonFinite = in.getLong();
         long nanos = in.getLong();
+        long sceneNanos = in.getLong();
+        long taskNanos = in.getLong();
         String text = string(in);
         String yaml = string(in);
         int count = in.getInt();
@@ -120,7 +128,7 @@ final class TaskResult {
                 tiles.add(TilePixels.filtered(index, x0, y0, x1, y1, sums));
             }
         }
-        return new TaskResult(kind, frame, text, size, primary, nonFinite, nanos, yaml, tiles);
+        return new TaskResult(kind, frame, text, size, primary, nonFinite, nanos, sceneNanos, taskNanos, yaml, tiles);
     }
 
     private static String string(ByteBuffer in) {
