@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
+import org.apache.hadoop.conf.Configuration;
 import raytracer.api.Scene;
 import raytracer.api.SceneFrame;
 import raytracer.api.SceneOptions;
@@ -26,7 +27,21 @@ final class ExecutorScenes {
     private static final Map<String, CompletableFuture<Scene>> SCENES = new LinkedHashMap<>(16, 0.75f, true);
     private static final Map<String, CompletableFuture<SceneFrame>> FRAMES = new LinkedHashMap<>(16, 0.75f, true);
 
+    private static Configuration hadoop;
+
     private ExecutorScenes() {
+    }
+
+    /**
+     * The executor's Hadoop configuration, made by the first task that writes a file: each new
+     * Configuration parses Hadoop's XML defaults again, a cost every frame's task would pay. Reading
+     * a Configuration from several threads is safe; no task changes it.
+     */
+    static synchronized Configuration hadoop() {
+        if (hadoop == null) {
+            hadoop = new Configuration();
+        }
+        return hadoop;
     }
 
     /** The job's scene, read on the first call in this JVM; {@code took[0]} gets the time the read took if this call read it. */

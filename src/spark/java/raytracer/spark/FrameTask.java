@@ -76,7 +76,7 @@ final class FrameTask implements Function<int[], byte[]> {
         Film film = new Film(image.width(), image.height());
         RenderStats stats = loaded.renderer(workers).render(film);
         String target = job.output(frame);
-        Configuration conf = new Configuration();
+        Configuration conf = ExecutorScenes.hadoop();
         failIfHooked(context, target);
         long bytes = Outputs.write(target, job.runId, conf,
                                    out -> ImageWriters.encode(film, image.exposure(), image.srgb(), new org.apache.hadoop.fs.Path(target).getName(),
@@ -91,7 +91,7 @@ final class FrameTask implements Function<int[], byte[]> {
         String hooked = context.getLocalProperty(FAIL_FIRST_ATTEMPT);
         if (hooked != null && Integer.parseInt(hooked) == context.partitionId()) {
             if (target != null) {
-                Outputs.leavePartial(target, job.runId, new Configuration());
+                Outputs.leavePartial(target, job.runId, ExecutorScenes.hadoop());
             }
             throw new IllegalStateException("the test hook fails the first attempt of task " + context.partitionId());
         }

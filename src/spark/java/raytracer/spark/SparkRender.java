@@ -265,6 +265,7 @@ public final class SparkRender implements Callable<Integer> {
         Set<String> yaml = new TreeSet<>();
         long nonFinite = 0;
         long taskNanos = 0;
+        long renderNanos = 0;
         long sceneNanos = 0;
         int sceneReads = 0;
         for (byte[] bytes : results) {
@@ -272,6 +273,7 @@ public final class SparkRender implements Callable<Integer> {
             yaml.add(r.yaml);
             nonFinite += r.nonFiniteSamples;
             taskNanos += r.taskNanos;
+            renderNanos += r.renderNanos;
             sceneNanos += r.sceneNanos;
             sceneReads += r.sceneNanos > 0 ? 1 : 0;
             switch (r.kind) {
@@ -306,9 +308,10 @@ public final class SparkRender implements Callable<Integer> {
                                 contextNanos, yaml));
             // what the model of docs/distributed.md is made of: scene reads, the tasks' own time, the driver's part
             err.printf(java.util.Locale.ROOT, "render-spark: timings: job %.3f s, first task started after %.3f s, tasks %.3f s in all "
-                       + "(%.1f ms a task), %d scene read%s on executors (%.3f s each), %s put together and written by the driver "
+                       + "(%.1f ms a task, %.1f ms of it rendering), %d scene read%s on executors (%.3f s each), %s put together and written by the driver "
                        + "in %.3f s%n",
-                       jobNanos / 1e9, progress.firstStartNanos() / 1e9, taskNanos / 1e9, taskNanos / 1e6 / plan.size(), sceneReads,
+                       jobNanos / 1e9, progress.firstStartNanos() / 1e9, taskNanos / 1e9, taskNanos / 1e6 / plan.size(),
+                       renderNanos / 1e6 / plan.size(), sceneReads,
                        sceneReads == 1 ? "" : "s",
                        sceneReads == 0 ? 0 : sceneNanos / 1e9 / sceneReads, tiles.size() == 1 ? "1 frame" : tiles.size() + " frames",
                        assemblyNanos / 1e9);
