@@ -43,8 +43,11 @@ public final class SparkModel {
         md.append(String.format(Locale.ROOT, "%d rounds; every Spark output byte-identical to render's: %s%n%n", rounds,
                                 runs.stream().allMatch(Run::identical) ? "yes" : "NO"));
 
-        md.append("| workload | mode | job s (mean) | range | ratio to one JVM, each round | startup s: JVM + context | first task after s |\n");
-        md.append("|---|---|---|---|---|---|---|\n");
+        // the ratio twice: with the job's wait for its first task (the driver's reading of the scene,
+        // executors launched) counted in, and counted as startup as render's JVM start and scene read are
+        md.append("| workload | mode | job s (mean) | range | ratio to one JVM, each round | the same, first-task wait as startup "
+                  + "| startup s: process - job (of it, context) | first task after s |\n");
+        md.append("|---|---|---|---|---|---|---|---|\n");
         List<Bar> bars = new ArrayList<>();
         for (String workload : List.of("turntable", "still")) {
             for (String mode : List.of("jvm", "local", "cluster")) {
@@ -54,14 +57,17 @@ public final class SparkModel {
                 }
                 double[] time = these.stream().mapToDouble(Run::time).toArray();
                 StringBuilder ratios = new StringBuilder();
+                StringBuilder working = new StringBuilder();
                 for (Run r : these) {
                     Run jvm = one(runs, r.round, workload, "jvm");
                     ratios.append(ratios.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.3f", r.time / jvm.time));
+                    working.append(working.length() == 0 ? "" : ", ")
+                        .append(String.format(Locale.ROOT, "%.3f", (r.time - r.firstTask) / jvm.time));
                 }
                 double startup = mean(these.stream().mapToDouble(r -> r.process - r.time).toArray());
                 double context = mean(these.stream().mapToDouble(Run::context).toArray());
-                md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f-%.2f | %s | %.2f (%.2f context) | %.2f |%n", workload, name(mode),
-                                        mean(time), min(time), max(time), ratios, startup, context,
+                md.append(String.format(Locale.ROOT, "| %s | %s | %.2f | %.2f-%.2f | %s | %s | %.2f (%.2f) | %.2f |%n", workload, name(mode),
+                                        mean(time), min(time), max(time), ratios, working, startup, context,
                                         mean(these.stream().mapToDouble(Run::firstTask).toArray())));
                 bars.add(new Bar(name(mode), label(workload), mean(time), (max(time) - min(time)) / 2));
             }
@@ -120,6 +126,16 @@ public final class SparkModel {
         md.append(String.format(Locale.ROOT, "%nCheck on the two-worker cluster: turntable predicted %.1f s, measured %.1f s (%.2fx); "
                                 + "still predicted %.1f s, measured %.1f s (%.2fx)%n", animation[1], measured, measured / animation[1],
                                 predictedStill, measuredStill, measuredStill / predictedStill));
+        // where a still pays off: N executors beat this machine's 2 cores once the still's work W
+        // (core-seconds) makes W / 2 > S + W / N, S the cluster's fixed cost (spark-submit's start,
+        // the context, executors launched, the scene read): W > S / (1/2 - 1/N)
+        double fixed = mean(stills.stream().mapToDouble(r -> r.process - r.time + r.firstTask + r.sceneRead).toArray());
+        md.append(String.format(Locale.ROOT, "%nWhere a still pays off: fixed cost S of a cluster job %.1f s; ", fixed));
+        for (int e : new int[] {10, 100}) {
+            double work = fixed / (1.0 / CORES - 1.0 / e);
+            md.append(String.format(Locale.ROOT, "on %d executors from %.0f core-s of work (%.1f s on this machine's 2 cores; "
+                                    + "8k at %.1f spp)%s", e, work, work / CORES, work / sample / POSTER_PIXELS, e == 10 ? "; " : "\n"));
+        }
         bars.add(new Bar("model, two workers", label("turntable"), animation[1], 0));
         bars.add(new Bar("model, two workers", label("still"), predictedStill, 0));
         System.out.print(md);
