@@ -1,5 +1,8 @@
 package raytracer.cli;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.function.Supplier;
@@ -42,6 +45,9 @@ final class OptionChecks {
             }
         }
         Path out = frames != null ? FrameFiles.name(pattern, frames.first()) : o.output != null ? o.output : OutputFile.defaultFor(o.scene);
+        if (frames != null) {
+            makeFolder(out);
+        }
         String unwritable = OutputFile.whyUnwritable(out);
         if (unwritable != null) {
             // a bad -o is a bad option value, found before rendering, not after
@@ -55,6 +61,22 @@ final class OptionChecks {
             }
         }
         return new RenderRequest(o.scene, out, options, o.threads, o.repeat, o.stats, o.quiet, o.show, frames, pattern, o.resume);
+    }
+
+    /**
+     * Makes the folder of an animation's frames when it is missing, as the Spark job's file system
+     * does: a hundred frames go to a folder of their own, and the same command then works on one
+     * machine and on a cluster. A folder that cannot be made is left to the writability check, which says why.
+     */
+    private static void makeFolder(Path frame) {
+        Path folder = frame.toAbsolutePath().getParent();
+        if (folder != null && !Files.exists(folder, LinkOption.NOFOLLOW_LINKS)) {
+            try {
+                Files.createDirectories(folder);
+            } catch (IOException | SecurityException e) {
+                // reported by OutputFile.whyUnwritable below, in the words it uses for any folder
+            }
+        }
     }
 
     /**

@@ -88,6 +88,15 @@ class FramesTest {
         assertArrayEquals(Files.readAllBytes(dir.resolve("still.pfm")), Files.readAllBytes(dir.resolve("a-2.pfm")));
     }
 
+    /** The frames' folder is made when missing (as the Spark job's file system makes it), so one command serves both. */
+    @Test
+    void framesFolderIsMadeWhenMissing() throws IOException {
+        String pattern = dir.resolve("out").resolve("shots").resolve("f-%04d.png").toString();
+        RenderCommandTest.Result r = RenderCommandTest.run(animated().toString(), "--frames", "0-1", "-o", pattern, "-q");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(Files.isRegularFile(dir.resolve("out/shots/f-0001.png")));
+    }
+
     @Test
     void resumeSkipsCompleteFramesOnly() throws IOException {
         Path scene = animated();
