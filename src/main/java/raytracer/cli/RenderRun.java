@@ -48,6 +48,7 @@ final class RenderRun {
     }
 
     int run() throws Exception {
+        HeapAfterCollections heap = request.stats() ? HeapAfterCollections.start() : null;
         try (Workers workers = new Workers(request.threads())) {
             long loadStart = System.nanoTime();
             LoadedScene loaded = workers.call(this::loadScene);
@@ -102,7 +103,7 @@ final class RenderRun {
                     report.summary(stats, request.output(), vp.filter());
                 }
                 if (request.stats()) {
-                    report.stats(loaded.report(), world, loadNanos, prepareNanos, stats);
+                    report.stats(loaded.report(), world, loadNanos, prepareNanos, stats, heap);
                     report.skips(analysis, stats, request.costView() ? "the bvh-cost view shows the scene as given"
                         : "--no-skip: the scene analysis was off, the scene rendered as given");
                 }
