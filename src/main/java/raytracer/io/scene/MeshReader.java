@@ -116,7 +116,7 @@ final class MeshReader {
         long parseNanos = System.nanoTime() - start;
         report.recordTiming("parse " + name, parseNanos);
         model.warnings().forEach(report::addWarning);
-        report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
+        report.addStatistic(statistic(name, model.parsed().triangleCount(), model.parsed().vertexCount(), model.ngons(),
                                       model.faces()));
         model.libraries().forEach(report::addInput);
         return new SharedMesh(file, builder, report, lookup, model, parseNanos);
@@ -174,7 +174,7 @@ final class MeshReader {
         try {
             if (isPly(file)) {
                 PlyModel ply = PlyLoader.load(file, smooth);
-                return new ObjModel(ply.mesh(), List.of(), ply.warnings(), ply.faces(), ply.ngons(), List.of(), Set.of());
+                return new ObjModel(ply.parsed(), List.of(), ply.warnings(), ply.faces(), ply.ngons(), List.of(), Set.of());
             }
             return ObjLoader.load(file, smooth);
         } catch (ObjException | PlyException e) {
