@@ -1,6 +1,5 @@
 package raytracer.render;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -104,7 +103,8 @@ public final class Renderer {
         FilteredTile[] filtered = filter.isBox() ? null : new FilteredTile[tiles.size()];
         long start = System.nanoTime();
         GeometricObject[][] tileObjects = TileObjects.of(world, tiles);
-        workers.invoke(new TileRange(tiles, 0, tiles.size(), film, scratch, filtered, tileObjects));
+        int[] order = TileOrder.warmUpFirst(tiles, tileObjects, world.searched().size(), TILE_SIZE);
+        workers.invoke(new TileRange(tiles, order, 0, order.length, film, scratch, filtered, tileObjects));
         if (filtered != null) {
             resolve(filtered, film, filter.reach());
         }
@@ -130,33 +130,12 @@ public final class Renderer {
     }
 
     /**
-     * The tiles (x0, y0, x1, y1) of a width x height image in the order the workers take them: the
-     * row-major list permuted by bit reversal of the index (van der Corput), so that every aligned
-     * run of 2^k successive tiles, each half the split hands a worker among them, is spread over
-     * the whole image.
-     * Why: the JIT compiles the hot loops from what the first tiles did. Taken row by row, those
-     * were a strip of floor or sky, where a shadow ray never meets a triangle behind its origin;
-     * compiled without that branch, the triangle test was thrown away and recompiled once the rows
-     * reached the object, during the first render (docs/performance.md, "Tile order").
+     * The tiles (x0, y0, x1, y1) of a width x height image, spread over it by bit reversal
+     * ({@link TileOrder#spread}): the order in which a wide filter's sums are added, and the order
+     * of rendering but for the richest tiles first ({@link TileOrder#warmUpFirst}).
      */
     static List<int[]> tiles(int width, int height) {
-        List<int[]> rowMajor = new ArrayList<>();
-        for (int y = 0; y < height; y += TILE_SIZE) {
-            for (int x = 0; x < width; x += TILE_SIZE) {
-                rowMajor.add(new int[] {x, y, Math.min(x + TILE_SIZE, width), Math.min(y + TILE_SIZE, height)});
-            }
-        }
-        int n = rowMajor.size();
-        int bits = 32 - Integer.numberOfLeadingZeros(n - 1);
-        List<int[]> spread = new ArrayList<>(n);
-        for (int i = 0; i < 1 << bits; i++) {
-            // bits is 0 for a single tile, and a shift by 32 would be no shift in Java
-            int j = bits == 0 ? 0 : Integer.reverse(i) >>> (32 - bits);
-            if (j < n) {
-                spread.add(rowMajor.get(j));
-            }
-        }
-        return spread;
+        return TileOrder.spread(width, height, TILE_SIZE);
     }
 
     /**
@@ -226,10 +205,12 @@ public final class Renderer {
         }
     }
 
-    /** Splits a range of tiles in halves; a single tile is rendered in place. */
+    /** Splits a range of the render order in halves; a single tile is rendered in place. */
     private final class TileRange extends RecursiveAction {
         private static final long serialVersionUID = 1L;
         private final transient List<int[]> tiles;
+        /** Positions in {@link #tiles} in the order of rendering. */
+        private final transient int[] order;
         private final int from;
         private final int to;
         private final transient Film film;
@@ -239,9 +220,10 @@ public final class Renderer {
         /** Per tile, the objects its camera rays can hit ({@link TileObjects}); null when not searched by tile. */
         private final transient GeometricObject[][] tileObjects;
 
-        TileRange(List<int[]> tiles, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch, FilteredTile[] filtered,
-                  GeometricObject[][] tileObjects) {
+        TileRange(List<int[]> tiles, int[] order, int from, int to, Film film, ThreadLocal<WorkerScratch> scratch,
+                  FilteredTile[] filtered, GeometricObject[][] tileObjects) {
             this.tiles = tiles;
+            this.order = order;
             this.from = from;
             this.to = to;
             this.film = film;
@@ -254,17 +236,18 @@ public final class Renderer {
         protected void compute() {
             if (to - from > 1) {
                 int mid = (from + to) >>> 1;
-                invokeAll(new TileRange(tiles, from, mid, film, scratch, filtered, tileObjects),
-                          new TileRange(tiles, mid, to, film, scratch, filtered, tileObjects));
+                invokeAll(new TileRange(tiles, order, from, mid, film, scratch, filtered, tileObjects),
+                          new TileRange(tiles, order, mid, to, film, scratch, filtered, tileObjects));
                 return;
             }
-            int[] tile = tiles.get(from);
+            int index = order[from];
+            int[] tile = tiles.get(index);
             WorkerScratch s = scratch.get();
-            s.cameraRayObjects = tileObjects == null ? null : tileObjects[from];
+            s.cameraRayObjects = tileObjects == null ? null : tileObjects[index];
             FilteredTile sums = null;
             if (filtered != null) {
                 sums = new FilteredTile(world.viewPlane().filter(), tile[0], tile[1], tile[2], tile[3]);
-                filtered[from] = sums;
+                filtered[index] = sums;
             }
             for (int y = tile[1]; y < tile[3]; y++) {
                 for (int x = tile[0]; x < tile[2]; x++) {
