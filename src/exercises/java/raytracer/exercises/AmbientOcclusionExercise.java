@@ -2,6 +2,7 @@ package raytracer.exercises;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.lang.reflect.Constructor;
 import org.junit.jupiter.api.BeforeAll;
@@ -44,7 +45,7 @@ class AmbientOcclusionExercise {
         MutableRgb out = new MutableRgb();
         double sum = 0;
         for (int call = 0; call < calls; call++) {
-            // the renderer reseeds the worker's generator for every pixel
+            // the renderer reseeds the worker's generator for every pixel sample
             scratch.worker.rng.reseed(call);
             ShadeRec sr = scratch.surfacePoint(0, 0, 0, nx, ny, nz);
             light.L(sr, out);
@@ -55,7 +56,8 @@ class AmbientOcclusionExercise {
 
     @Test
     void underAnOpenSkyItIsTheAmbientLight() {
-        assertEquals(0.5 * COLOR.g(), meanRadiance(occluder(16), 10, 0, 1, 0), 1e-15);
+        assertEquals(0.5 * COLOR.g(), meanRadiance(occluder(16), 10, 0, 1, 0), 1e-15,
+                     "AmbientOccluder(0.5, " + COLOR + ", 16), nothing around: every direction is open, so L = ls c exactly");
     }
 
     @Test
@@ -77,15 +79,20 @@ class AmbientOcclusionExercise {
     void directionsFollowTheNormal() {
         // the same disk, but the surface faces down and away from it: nothing is hidden
         Disk disk = new Disk(new Point3D(0, 1, 0), new Vector3D(0, -1, 0), 1);
-        assertEquals(0.5 * COLOR.g(), meanRadiance(occluder(64), 20, 0, -1, 0, disk), 1e-15);
+        assertEquals(0.5 * COLOR.g(), meanRadiance(occluder(64), 20, 0, -1, 0, disk), 1e-15,
+                     "a point facing down, a disk of radius 1 at height 1 above it: its hemisphere is open, so L = ls c exactly "
+                     + "(directions must be drawn about sr.normal)");
         // facing sideways, exactly the upper half of the hemisphere meets a large disk just above
         Disk large = new Disk(new Point3D(0, 1e-3, 0), new Vector3D(0, -1, 0), 1e4);
-        assertEquals(0.5, meanRadiance(occluder(64), 300, 1, 0, 0, large) / (0.5 * COLOR.g()), 0.02);
+        assertEquals(0.5, meanRadiance(occluder(64), 300, 1, 0, 0, large) / (0.5 * COLOR.g()), 0.02,
+                     "a point facing +x under a disk of radius 1e4 just above it: the upper half of its hemisphere is hidden, "
+                     + "so L must be ls c / 2 (to 0.02)");
     }
 
     @Test
     void insideAClosedSphereEverythingIsHidden() {
-        assertEquals(0, meanRadiance(occluder(32), 10, 0, 1, 0, new Sphere(new Point3D(0, 0, 0), 1)), 1e-15);
+        assertEquals(0, meanRadiance(occluder(32), 10, 0, 1, 0, new Sphere(new Point3D(0, 0, 0), 1)), 1e-15,
+                     "the centre of a closed sphere of radius 1: every shadow ray is blocked, so L = 0");
     }
 
     @Test
@@ -98,6 +105,14 @@ class AmbientOcclusionExercise {
 
     @Test
     void atLeastOneSampleIsNeeded() {
-        assertThrows(IllegalArgumentException.class, () -> occluder(0));
+        assertThrows(IllegalArgumentException.class, () -> occluder(0),
+                     "AmbientOccluder(0.5, c, 0): at least one sample is needed (IllegalArgumentException)");
+    }
+
+    @Test
+    void itCastsShadows() {
+        assertTrue(occluder(8).castsShadows(), "castsShadows() must stay true (the default): the scene analysis keeps the "
+                                               + "objects that could shadow a light that casts shadows, and this one's rays go "
+                                               + "everywhere (docs/teaching.md, exercise 4)");
     }
 }

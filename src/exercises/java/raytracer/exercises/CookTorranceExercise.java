@@ -57,16 +57,19 @@ class CookTorranceExercise {
         for (double alpha : new double[] {0.1, 0.3, 0.7}) {
             MutableRgb value = f(brdf(f0, alpha), n, n);
             double scale = 1 / (4 * Math.PI * alpha * alpha);
-            assertEquals(f0.r() * scale, value.r, 1e-9 * scale, "red, alpha " + alpha);
-            assertEquals(f0.g() * scale, value.g, 1e-9 * scale, "green, alpha " + alpha);
-            assertEquals(f0.b() * scale, value.b, 1e-9 * scale, "blue, alpha " + alpha);
+            String relation = "CookTorrance(f0 " + f0 + ", alpha " + alpha + "), wo = wi = n: f must be f0 / (4 pi alpha^2) = f0 times "
+                              + scale + " (D = 1 / (pi alpha^2), G = 1, F = f0, both cosines 1), got " + value + "; ";
+            assertEquals(f0.r() * scale, value.r, 1e-9 * scale, relation + "red");
+            assertEquals(f0.g() * scale, value.g, 1e-9 * scale, relation + "green");
+            assertEquals(f0.b() * scale, value.b, 1e-9 * scale, relation + "blue");
         }
     }
 
     @Test
     void roughnessOutsideZeroToOneIsRefused() {
         for (double alpha : new double[] {0, -0.5, 1.5, Double.NaN}) {
-            assertThrows(IllegalArgumentException.class, () -> brdf(RGBColor.WHITE, alpha), "alpha " + alpha);
+            assertThrows(IllegalArgumentException.class, () -> brdf(RGBColor.WHITE, alpha),
+                         "CookTorrance(white, " + alpha + "): a roughness outside (0, 1] must be refused (IllegalArgumentException)");
         }
     }
 
@@ -95,9 +98,11 @@ class CookTorranceExercise {
             MutableRgb back = f(brdf, wi, wo);
             assertTrue(forth.r >= 0 && forth.g >= 0 && forth.b >= 0 && Double.isFinite(forth.r + forth.g + forth.b),
                        "f must be finite and non-negative, got " + forth);
-            assertEquals(forth.g, back.g, 1e-10 * (1 + forth.g), "f(wo, wi) = f(wi, wo)");
+            assertEquals(forth.g, back.g, 1e-10 * (1 + forth.g), "reciprocity, f(wo, wi) = f(wi, wo), for wo " + wo + ", wi " + wi
+                                                                 + ": got " + forth.g + " and " + back.g);
             MutableVec3 below = new MutableVec3().set(wi.x, wi.y, -wi.z);
-            assertTrue(f(brdf, wo, below).isBlack() && f(brdf, below, wo).isBlack(), "no light through the surface");
+            assertTrue(f(brdf, wo, below).isBlack() && f(brdf, below, wo).isBlack(),
+                       "f must be black when either direction is below the surface (wo " + wo + ", wi " + below + ")");
         }
         MutableRgb grazing = f(brdf(RGBColor.WHITE, 0.1), direction(89.9999, 0), direction(89.9999, 180));
         assertTrue(Double.isFinite(grazing.g) && grazing.g >= 0, "finite at grazing angles, got " + grazing);

@@ -111,7 +111,9 @@ class NoiseTextureExercise {
             double x = 20 * random.nextDouble();
             double y = 20 * random.nextDouble();
             double z = 20 * random.nextDouble();
-            assertEquals(t(unit, x, y, z), t(stretched, 2.5 * x, 2.5 * y, 2.5 * z), 1e-12);
+            assertEquals(t(unit, x, y, z), t(stretched, 2.5 * x, 2.5 * y, 2.5 * z), 1e-12,
+                         "scale 2.5 stretches the pattern: t at (" + 2.5 * x + ", " + 2.5 * y + ", " + 2.5 * z + ") with scale 2.5 must equal "
+                         + "t at (" + x + ", " + y + ", " + z + ") with scale 1");
         }
     }
 
@@ -127,7 +129,8 @@ class NoiseTextureExercise {
 
     @Test
     void aScaleOfZeroIsRefused() {
-        assertThrows(IllegalArgumentException.class, () -> noise(0));
-        assertThrows(IllegalArgumentException.class, () -> noise(Double.NaN));
+        assertThrows(IllegalArgumentException.class, () -> noise(0), "GradientNoise(..., 0): a scale must be positive (IllegalArgumentException)");
+        assertThrows(IllegalArgumentException.class, () -> noise(Double.NaN),
+                     "GradientNoise(..., NaN): a scale must be positive (IllegalArgumentException)");
     }
 }

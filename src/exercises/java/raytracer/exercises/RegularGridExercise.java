@@ -140,19 +140,24 @@ class RegularGridExercise {
             double expectedT = sr.t;
             sr.beginSearch(r, 0, Double.POSITIVE_INFINITY);
             boolean found = g.hit(r, sr);
-            assertEquals(expected != null, found, "ray " + i + ": hit() must say whether it recorded a hit");
-            assertSame(expected, sr.object, "ray " + i + ": another closest object");
-            assertEquals(expectedT, sr.t, 0, "ray " + i + ": another distance");
+            String ray = "400 objects, ray " + i + " from (" + r.ox + ", " + r.oy + ", " + r.oz + ") along (" + r.dx + ", " + r.dy
+                         + ", " + r.dz + "): ";
+            assertEquals(expected != null, found, ray + "hit() must return whether it recorded a hit; a search of every object "
+                                                  + (expected == null ? "finds none" : "finds one at t = " + expectedT));
+            assertSame(expected, sr.object, ray + "the closest object is " + expected + " at t = " + expectedT + ", the grid found "
+                                            + sr.object + " at t = " + sr.t + " (a grid may stop only once the closest hit lies "
+                                            + "within the cells walked)");
+            assertEquals(expectedT, sr.t, 0, ray + "the closest hit is at t = " + expectedT + ", the grid recorded " + sr.t);
             hits += found ? 1 : 0;
             double tMax = 30 * random.nextDouble();
             boolean blocked = false;
             for (GeometricObject o : objects) {
                 blocked |= o.castsShadows() && o.shadowHit(r, tMax, sr);
             }
-            assertEquals(blocked, g.shadowHit(r, tMax, sr), "ray " + i + ": shadowHit up to " + tMax
-                                                            + " (objects that cast no shadow block nothing)");
+            assertEquals(blocked, g.shadowHit(r, tMax, sr), ray + "shadowHit up to " + tMax + " must be " + blocked
+                                                            + ", as a search of every object says (objects that cast no shadow block nothing)");
         }
-        assertTrue(hits > 2000, "too few hits to judge: " + hits);
+        assertTrue(hits > 2000, "too few hits to judge: " + hits + " of 20,000 rays (more than 2000 expected)");
     }
 
     @Test
@@ -168,8 +173,9 @@ class RegularGridExercise {
             }
             double t = sr.t;
             sr.beginSearch(r, 0, t * 0.999);
-            assertFalse(g.hit(r, sr), "ray " + i + ": a hit beyond sr.t was recorded");
-            assertNull(sr.object);
+            String ray = "ray " + i + ", its closest hit at t = " + t + ", searched with sr.t = " + (t * 0.999) + ": ";
+            assertFalse(g.hit(r, sr), ray + "hit() must record only hits closer than sr.t, and return false");
+            assertNull(sr.object, ray + "sr.object must stay null: a hit beyond sr.t was recorded");
         }
     }
 
@@ -191,7 +197,8 @@ class RegularGridExercise {
             g.hit(r, scratch.sr);
         }
         double perRay = counted.stream().mapToLong(c -> c.tests).sum() / (double) rays;
-        assertTrue(perRay < 100, "a grid should test a few objects per ray, not " + perRay + " of " + objects.size());
+        assertTrue(perRay < 100, "2000 spheres of radius 0.2 in a cube of 20: a grid must test fewer than 100 objects per ray "
+                                 + "(it walks the cells a ray pierces), tested " + perRay + " of " + objects.size());
     }
 
     @Test
@@ -210,7 +217,9 @@ class RegularGridExercise {
             GeometricObject expected = closestByList(objects, r);
             scratch.sr.beginSearch(r, 0, Double.POSITIVE_INFINITY);
             g.hit(r, scratch.sr);
-            assertSame(expected, scratch.sr.object, "ray " + i);
+            assertSame(expected, scratch.sr.object, "300 triangles in the plane y = 0 (a grid one cell high), ray " + i + " down from ("
+                                                    + r.ox + ", 5, " + r.oz + "): the closest triangle is " + expected + ", the grid found "
+                                                    + scratch.sr.object);
         }
     }
 
@@ -220,7 +229,8 @@ class RegularGridExercise {
         BBox box = grid(objects).boundingBox();
         for (GeometricObject o : objects) {
             BBox b = o.boundingBox();
-            assertTrue(box.contains(b.x0(), b.y0(), b.z0()) && box.contains(b.x1(), b.y1(), b.z1()), b + " sticks out of " + box);
+            assertTrue(box.contains(b.x0(), b.y0(), b.z0()) && box.contains(b.x1(), b.y1(), b.z1()),
+                       "boundingBox() must hold every object's box: " + b + " sticks out of " + box);
         }
     }
 
@@ -228,6 +238,7 @@ class RegularGridExercise {
     void unboundedObjectsAreRefused() {
         List<GeometricObject> objects = new ArrayList<>(scene(new SplittableRandom(2), 3));
         objects.add(new Plane(Point3D.ORIGIN, new Normal(0, 1, 0)));
-        assertThrows(IllegalArgumentException.class, () -> grid(objects), "a plane has no box to put in cells");
+        assertThrows(IllegalArgumentException.class, () -> grid(objects),
+                     "RegularGrid(3 objects and a plane): a plane has no box to put in cells, IllegalArgumentException");
     }
 }

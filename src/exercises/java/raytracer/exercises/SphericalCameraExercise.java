@@ -55,18 +55,21 @@ class SphericalCameraExercise {
     }
 
     private static void assertDirection(Vector3D expected, Ray ray, String where) {
-        assertEquals(expected.x(), ray.dx, 1e-12, where + ": x");
-        assertEquals(expected.y(), ray.dy, 1e-12, where + ": y");
-        assertEquals(expected.z(), ray.dz, 1e-12, where + ": z");
+        String message = where + ": the ray's direction must be " + expected + " (to 1e-12), got (" + ray.dx + ", " + ray.dy + ", "
+                         + ray.dz + ")";
+        assertEquals(expected.x(), ray.dx, 1e-12, message);
+        assertEquals(expected.y(), ray.dy, 1e-12, message);
+        assertEquals(expected.z(), ray.dz, 1e-12, message);
     }
 
     @Test
     void theCentreOfTheImageLooksAtTheLookAtPoint() {
         Ray ray = ray(camera(120, 60), WIDTH / 2.0, HEIGHT / 2.0);
-        assertEquals(EYE.x(), ray.ox, 0);
-        assertEquals(EYE.y(), ray.oy, 0);
-        assertEquals(EYE.z(), ray.oz, 0);
-        assertDirection(w.negate(), ray, "the centre");
+        String origin = "Spherical(eye " + EYE + ", ...): every ray starts at the eye, got (" + ray.ox + ", " + ray.oy + ", " + ray.oz + ")";
+        assertEquals(EYE.x(), ray.ox, 0, origin);
+        assertEquals(EYE.y(), ray.oy, 0, origin);
+        assertEquals(EYE.z(), ray.oz, 0, origin);
+        assertDirection(w.negate(), ray, "Spherical(120, 60 degrees), the image's centre (200, 100) looks at the look-at point");
     }
 
     @Test
@@ -74,20 +77,24 @@ class SphericalCameraExercise {
         Camera camera = camera(120, 60);
         Ray left = ray(camera, 0, HEIGHT / 2.0);
         Vector3D d = new Vector3D(left.dx, left.dy, left.dz);
-        assertEquals(-Math.sin(Math.toRadians(60)), d.dot(u), 1e-12, "the left edge is 60 degrees to the left");
-        assertEquals(Math.cos(Math.toRadians(60)), -d.dot(w), 1e-12);
+        String leftEdge = "Spherical(120, 60 degrees), pixel position (0, 100): the left edge is h/2 = 60 degrees to the left, "
+                          + "so its direction d has d.u = -sin(60), -d.w = cos(60); got d = " + d;
+        assertEquals(-Math.sin(Math.toRadians(60)), d.dot(u), 1e-12, leftEdge);
+        assertEquals(Math.cos(Math.toRadians(60)), -d.dot(w), 1e-12, leftEdge);
         Ray top = ray(camera, WIDTH / 2.0, 0);
-        assertEquals(Math.sin(Math.toRadians(30)), new Vector3D(top.dx, top.dy, top.dz).dot(v), 1e-12, "the top edge is 30 degrees up");
+        Vector3D t = new Vector3D(top.dx, top.dy, top.dz);
+        assertEquals(Math.sin(Math.toRadians(30)), t.dot(v), 1e-12,
+                     "Spherical(120, 60 degrees), pixel position (200, 0): the top edge is v/2 = 30 degrees up, so d.v = sin(30); got d = " + t);
     }
 
     @Test
     void aFullPanoramaSeesAllAround() {
         Camera camera = camera(360, 180);
-        assertDirection(v, ray(camera, WIDTH / 2.0, 0), "the top row looks straight up");
-        assertDirection(v.negate(), ray(camera, WIDTH / 2.0, HEIGHT), "the bottom row looks straight down");
-        assertDirection(w, ray(camera, 0, HEIGHT / 2.0), "the left edge looks backwards");
-        assertDirection(w, ray(camera, WIDTH, HEIGHT / 2.0), "the right edge looks backwards too");
-        assertDirection(u, ray(camera, 3 * WIDTH / 4.0, HEIGHT / 2.0), "three quarters across looks right");
+        assertDirection(v, ray(camera, WIDTH / 2.0, 0), "Spherical(360, 180), pixel position (200, 0): the top row looks straight up, +v");
+        assertDirection(v.negate(), ray(camera, WIDTH / 2.0, HEIGHT), "Spherical(360, 180), (200, 200): the bottom row looks straight down, -v");
+        assertDirection(w, ray(camera, 0, HEIGHT / 2.0), "Spherical(360, 180), (0, 100): the left edge looks backwards, +w");
+        assertDirection(w, ray(camera, WIDTH, HEIGHT / 2.0), "Spherical(360, 180), (400, 100): the right edge looks backwards too, +w");
+        assertDirection(u, ray(camera, 3 * WIDTH / 4.0, HEIGHT / 2.0), "Spherical(360, 180), (300, 100): three quarters across looks right, +u");
     }
 
     @Test
@@ -101,20 +108,22 @@ class SphericalCameraExercise {
             double psi = (1 - 2 * py / HEIGHT) * Math.toRadians(50);
             Vector3D expected = u.scale(Math.cos(psi) * Math.sin(lambda)).add(v.scale(Math.sin(psi)))
                 .sub(w.scale(Math.cos(psi) * Math.cos(lambda)));
-            assertDirection(expected, ray(camera, px, py), "pixel position (" + px + ", " + py + ")");
+            assertDirection(expected, ray(camera, px, py), "Spherical(200, 100 degrees), random pixel position (" + px + ", " + py
+                                                           + "): cos(psi) sin(lambda) u + sin(psi) v - cos(psi) cos(lambda) w");
         }
     }
 
     @Test
     void itHasNoLens() {
-        assertFalse(camera(90, 60).needsLensSamples());
+        assertFalse(camera(90, 60).needsLensSamples(), "needsLensSamples() must be false: a pinhole-like camera has no lens");
     }
 
     @Test
     void fieldsOfViewOutOfRangeAreRefused() {
-        assertThrows(IllegalArgumentException.class, () -> camera(0, 60));
-        assertThrows(IllegalArgumentException.class, () -> camera(361, 60));
-        assertThrows(IllegalArgumentException.class, () -> camera(90, 181));
-        assertThrows(IllegalArgumentException.class, () -> camera(90, Double.NaN));
+        String range = ": fields of view must be positive, at most 360 across and 180 up (IllegalArgumentException)";
+        assertThrows(IllegalArgumentException.class, () -> camera(0, 60), "Spherical(..., 0, 60)" + range);
+        assertThrows(IllegalArgumentException.class, () -> camera(361, 60), "Spherical(..., 361, 60)" + range);
+        assertThrows(IllegalArgumentException.class, () -> camera(90, 181), "Spherical(..., 90, 181)" + range);
+        assertThrows(IllegalArgumentException.class, () -> camera(90, Double.NaN), "Spherical(..., 90, NaN)" + range);
     }
 }

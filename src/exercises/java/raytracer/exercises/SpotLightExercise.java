@@ -67,16 +67,22 @@ class SpotLightExercise {
         MutableVec3 fromSpot = new MutableVec3();
         MutableVec3 fromPoint = new MutableVec3();
         for (int i = 0; i < 1000; i++) {
-            ShadeRec sr = pointAt(25 * random.nextDouble(), 360 * random.nextDouble(), 0.1 + 10 * random.nextDouble());
+            double theta = 25 * random.nextDouble();
+            double phi = 360 * random.nextDouble();
+            double r = 0.1 + 10 * random.nextDouble();
+            ShadeRec sr = pointAt(theta, phi, r);
+            String where = "SpotLight(30, " + COLOR + ", " + POSITION + ", down, total 40, start 25) at " + theta
+                           + " degrees from the axis (azimuth " + phi + "), " + r + " away: ";
             MutableRgb expected = radiance(point, sr);
             MutableRgb got = radiance(spot, sr);
-            assertEquals(expected.r, got.r, 1e-12 * expected.r, "red");
-            assertEquals(expected.b, got.b, 1e-12 * expected.b, "blue");
+            assertEquals(expected.r, got.r, 1e-12 * expected.r, where + "within the inner cone L must be the point light's I / r^2, red");
+            assertEquals(expected.b, got.b, 1e-12 * expected.b, where + "within the inner cone L must be the point light's I / r^2, blue");
             double d = spot.getDirection(sr, fromSpot);
-            assertEquals(point.getDirection(sr, fromPoint), d, 1e-12 * d, "the distance to the light");
-            assertEquals(0, fromSpot.x - fromPoint.x, 1e-12, "the unit direction to the light");
-            assertEquals(0, fromSpot.y - fromPoint.y, 1e-12, "the unit direction to the light");
-            assertEquals(0, fromSpot.z - fromPoint.z, 1e-12, "the unit direction to the light");
+            assertEquals(point.getDirection(sr, fromPoint), d, 1e-12 * d, where + "getDirection must return the distance to the light");
+            String direction = where + "getDirection must write the unit direction to the light, " + fromPoint + ", got " + fromSpot;
+            assertEquals(0, fromSpot.x - fromPoint.x, 1e-12, direction);
+            assertEquals(0, fromSpot.y - fromPoint.y, 1e-12, direction);
+            assertEquals(0, fromSpot.z - fromPoint.z, 1e-12, direction);
         }
     }
 
@@ -84,7 +90,9 @@ class SpotLightExercise {
     void beyondTheConeItIsDark() {
         Light spot = spot(new Vector3D(0, -1, 0), 40, 25);
         for (double theta : new double[] {40.01, 60, 90, 135, 180}) {
-            assertTrue(radiance(spot, pointAt(theta, 17, 3)).isBlack(), "at " + theta + " degrees from the axis");
+            MutableRgb got = radiance(spot, pointAt(theta, 17, 3));
+            assertTrue(got.isBlack(), "SpotLight(..., down, total 40, start 25) at " + theta
+                                      + " degrees from the axis, beyond the cone: L must be black, got " + got);
         }
     }
 
@@ -97,7 +105,9 @@ class SpotLightExercise {
             double r = 2.5;
             double ratio = (Math.cos(Math.toRadians(theta)) - cosTotal) / (cosStart - cosTotal);
             double expected = 30 * COLOR.g() / (r * r) * Math.pow(ratio, 4);
-            assertEquals(expected, radiance(spot, pointAt(theta, 200, r)).g, 1e-9 * expected, "at " + theta + " degrees");
+            assertEquals(expected, radiance(spot, pointAt(theta, 200, r)).g, 1e-9 * expected,
+                         "SpotLight(30, ..., down, total 40, start 25) at " + theta + " degrees from the axis, " + r
+                         + " away: L must be I / r^2 ((cos(theta) - cos(total)) / (cos(start) - cos(total)))^4, green");
         }
     }
 
@@ -107,25 +117,31 @@ class SpotLightExercise {
         ShadeRec sr = pointAt(20, 0, 2);
         double ratio = (Math.cos(Math.toRadians(20)) - Math.cos(Math.toRadians(30)))
                        / (Math.cos(Math.toRadians(10)) - Math.cos(Math.toRadians(30)));
-        assertEquals(30 * COLOR.r() / 4 * Math.pow(ratio, 4), radiance(longAxis, sr).r, 1e-9);
+        assertEquals(30 * COLOR.r() / 4 * Math.pow(ratio, 4), radiance(longAxis, sr).r, 1e-9,
+                     "SpotLight(..., direction (0, -5, 0), total 30, start 10) at 20 degrees, 2 away: a direction of length 5 "
+                     + "is the same axis as (0, -1, 0)");
         // a spot pointing along +x lights a point on the +x side, not one below it
         Light sideways = spot(new Vector3D(1, 0, 0), 30, 10);
-        assertEquals(30 * COLOR.r() / 9, radiance(sideways, scratch.surfacePoint(POSITION.x() + 3, POSITION.y(), POSITION.z(), -1, 0, 0)).r, 1e-12);
-        assertTrue(radiance(sideways, pointAt(0, 0, 3)).isBlack());
+        assertEquals(30 * COLOR.r() / 9, radiance(sideways, scratch.surfacePoint(POSITION.x() + 3, POSITION.y(), POSITION.z(), -1, 0, 0)).r,
+                     1e-12, "SpotLight(..., direction (1, 0, 0)): a point 3 along +x from the light lies on its axis, L = I / 9");
+        assertTrue(radiance(sideways, pointAt(0, 0, 3)).isBlack(),
+                   "SpotLight(..., direction (1, 0, 0), total 30): a point 3 below the light is 90 degrees off its axis, L = 0");
     }
 
     @Test
     void itCastsShadowsLikeEveryLight() {
-        assertTrue(spot(new Vector3D(0, -1, 0), 40, 25).castsShadows());
+        assertTrue(spot(new Vector3D(0, -1, 0), 40, 25).castsShadows(), "castsShadows() must be true, as for every light by default");
     }
 
     @Test
     void impossibleConesAreRefused() {
         Vector3D down = new Vector3D(0, -1, 0);
-        assertThrows(IllegalArgumentException.class, () -> spot(down, 20, 30), "the falloff cannot start outside the cone");
-        assertThrows(IllegalArgumentException.class, () -> spot(down, 0, 0));
-        assertThrows(IllegalArgumentException.class, () -> spot(down, 180, 10));
-        assertThrows(IllegalArgumentException.class, () -> spot(down, 30, -1));
-        assertThrows(IllegalArgumentException.class, () -> spot(new Vector3D(0, 0, 0), 30, 10), "a direction of length 0");
+        String rule = ": 0 <= start <= total < 180 and total > 0, else IllegalArgumentException";
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 20, 30), "total 20, start 30: the falloff cannot start outside the cone" + rule);
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 0, 0), "total 0, start 0" + rule);
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 180, 10), "total 180, start 10" + rule);
+        assertThrows(IllegalArgumentException.class, () -> spot(down, 30, -1), "total 30, start -1" + rule);
+        assertThrows(IllegalArgumentException.class, () -> spot(new Vector3D(0, 0, 0), 30, 10),
+                     "direction (0, 0, 0): a direction of length 0 has no axis (IllegalArgumentException)");
     }
 }

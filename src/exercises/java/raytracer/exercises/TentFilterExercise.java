@@ -47,11 +47,12 @@ class TentFilterExercise {
     void theWeightIsTheTent() {
         for (double r : new double[] {0.75, 1, 1.5, 3, 8}) {
             PixelFilter f = tent(r);
-            assertEquals(r, f.radius());
-            assertEquals("tent", f.name());
+            assertEquals(r, f.radius(), "Tent(" + r + ").radius() must be the radius it was made with");
+            assertEquals("tent", f.name(), "Tent(" + r + ").name() must be \"tent\", the name scenes and --filter use");
             assertFalse(f.isBox(), "only the book's box is averaged without weights");
             for (double d = -r - 1; d <= r + 1; d += 0.0625) {
-                assertEquals(Math.max(0, 1 - Math.abs(d) / r), f.weight(d), 1e-12, "r = " + r + ", d = " + d);
+                assertEquals(Math.max(0, 1 - Math.abs(d) / r), f.weight(d), 1e-12, "Tent(" + r + ").weight(" + d
+                                                                                     + ") must be max(0, 1 - |d| / r)");
             }
         }
     }
@@ -59,8 +60,9 @@ class TentFilterExercise {
     @Test
     void aRadiusNotAboveHalfAPixelOrAboveEightIsRefused() {
         for (double bad : new double[] {0, 0.4, 0.5, 8.5, Double.NaN}) {
-            InvocationTargetException e = assertThrows(InvocationTargetException.class, () -> tent.newInstance(bad), "radius " + bad);
-            assertEquals(IllegalArgumentException.class, e.getCause().getClass(), "radius " + bad);
+            String rule = "Tent(" + bad + "): a radius must be above 0.5 and at most 8 pixels, else IllegalArgumentException";
+            InvocationTargetException e = assertThrows(InvocationTargetException.class, () -> tent.newInstance(bad), rule);
+            assertEquals(IllegalArgumentException.class, e.getCause().getClass(), rule + ", got " + e.getCause());
         }
     }
 
@@ -100,7 +102,8 @@ class TentFilterExercise {
                 }
             }
             for (int y = 0; y < height; y++) {
-                assertEquals(lit / all, film.get(x, y, 0), 1e-6, "pixel " + x + ", " + y);
+                assertEquals(lit / all, film.get(x, y, 0), 1e-6, "pixel (" + x + ", " + y + ") must be the tent-weighted average of "
+                                                                 + "the samples within 1.5 pixels of its centre, " + lit / all);
             }
         }
     }

@@ -48,69 +48,82 @@ class TorusExercise {
     @Test
     void aRayAlongTheAxisPassesThroughTheHole() {
         GeometricObject t = torus(A, B);
-        assertNull(scratch.hit(t, ray(0, 5, 0, 0, -1, 0)));
-        assertFalse(t.shadowHit(ray(0, 5, 0, 0, -1, 0), Double.POSITIVE_INFINITY, scratch.sr));
+        ShadeRec sr = scratch.hit(t, ray(0, 5, 0, 0, -1, 0));
+        assertNull(sr, "Torus(2, 0.5), ray from (0, 5, 0) down the axis: it passes through the hole, but hit() recorded t = "
+                       + (sr == null ? 0 : sr.t));
+        assertFalse(t.shadowHit(ray(0, 5, 0, 0, -1, 0), Double.POSITIVE_INFINITY, scratch.sr),
+                    "Torus(2, 0.5), shadow ray from (0, 5, 0) down the axis: it passes through the hole");
     }
 
     @Test
     void aRayDownThroughTheTubesCentreCircleHitsItsTop() {
         ShadeRec sr = scratch.hit(torus(A, B), ray(A, 5, 0, 0, -1, 0));
-        assertNotNull(sr, "a ray down at x = a must hit the top of the tube");
-        assertEquals(5 - B, sr.t, 1e-9);
-        assertEquals(B, sr.hitPoint.y, 1e-9);
-        assertEquals(1, sr.normal.y, 1e-9, "the normal at the top of the tube points up");
-        assertTrue(sr.frontFace);
+        String ray = "Torus(2, 0.5), ray from (2, 5, 0) straight down: ";
+        assertNotNull(sr, ray + "a ray down at x = a must hit the top of the tube");
+        assertEquals(5 - B, sr.t, 1e-9, ray + "the top of the tube lies at y = b, t = 5 - b");
+        assertEquals(B, sr.hitPoint.y, 1e-9, ray + "completeHit must write the hit point, y = b");
+        assertEquals(1, sr.normal.y, 1e-9, ray + "the normal at the top of the tube points up, got " + sr.normal);
+        assertTrue(sr.frontFace, ray + "it meets the outside of the surface: frontFace must be true");
     }
 
     @Test
     void distancesAreInUnitsOfTheRaysParameterNotOfLength() {
         // instances hand the torus unnormalised directions: t must still put o + t d on the surface
         ShadeRec sr = scratch.hit(torus(A, B), ray(A, 5, 0, 0, -4, 0));
-        assertNotNull(sr);
-        assertEquals((5 - B) / 4, sr.t, 1e-9);
+        String ray = "Torus(2, 0.5), ray from (2, 5, 0) with direction (0, -4, 0), four times unit length: ";
+        assertNotNull(sr, ray + "it must hit the top of the tube");
+        assertEquals((5 - B) / 4, sr.t, 1e-9, ray + "t is in units of the direction, (5 - b) / 4: do not normalise it away");
     }
 
     @Test
     void aRayAlongTheEquatorMeetsTheOuterAndTheInnerSurface() {
         GeometricObject t = torus(A, B);
         ShadeRec outer = scratch.hit(t, ray(-10, 0, 0, 1, 0, 0));
-        assertNotNull(outer);
-        assertEquals(10 - (A + B), outer.t, 1e-9);
-        assertEquals(-1, outer.normal.x, 1e-9);
+        String fromOutside = "Torus(2, 0.5), ray from (-10, 0, 0) along +x: ";
+        assertNotNull(outer, fromOutside + "it must hit the outer equator");
+        assertEquals(10 - (A + B), outer.t, 1e-9, fromOutside + "the outer equator lies at x = -(a + b), t = 10 - (a + b)");
+        assertEquals(-1, outer.normal.x, 1e-9, fromOutside + "the outer equator's normal points along -x, got " + outer.normal);
         // from the centre of the hole, the first surface is the inner equator at distance a - b
         ShadeRec inner = scratch.hit(t, ray(0, 0, 0, 1, 0, 0));
-        assertNotNull(inner);
-        assertEquals(A - B, inner.t, 1e-9);
-        assertEquals(-1, inner.normal.x, 1e-9, "the inner equator's normal points towards the axis");
-        assertTrue(inner.frontFace);
+        String fromCentre = "Torus(2, 0.5), ray from the centre (0, 0, 0) along +x: ";
+        assertNotNull(inner, fromCentre + "it must hit the inner equator");
+        assertEquals(A - B, inner.t, 1e-9, fromCentre + "the inner equator lies at x = a - b");
+        assertEquals(-1, inner.normal.x, 1e-9, fromCentre + "the inner equator's normal points towards the axis, got " + inner.normal);
+        assertTrue(inner.frontFace, fromCentre + "it meets the outside of the surface: frontFace must be true");
     }
 
     @Test
     void aRayFromInsideTheTubeLeavesThroughItsBackFace() {
         ShadeRec sr = scratch.hit(torus(A, B), ray(0, 0, A, 0, 1, 0));
-        assertNotNull(sr);
-        assertEquals(B, sr.t, 1e-9);
-        assertFalse(sr.frontFace, "the ray leaves the tube: it sees the back of the surface");
-        assertEquals(-1, sr.normal.y, 1e-9, "the normal is turned to face the ray");
+        String ray = "Torus(2, 0.5), ray from (0, 0, 2), inside the tube, straight up: ";
+        assertNotNull(sr, ray + "it must hit the tube's top from inside");
+        assertEquals(B, sr.t, 1e-9, ray + "the tube's top is b above the centre circle");
+        assertFalse(sr.frontFace, ray + "the ray leaves the tube: it sees the back of the surface, frontFace false");
+        assertEquals(-1, sr.normal.y, 1e-9, ray + "the normal is turned to face the ray, (0, -1, 0), got " + sr.normal);
     }
 
     @Test
     void raysJustAboveTheTopMissAndJustBelowItHit() {
         GeometricObject t = torus(A, B);
-        assertNull(scratch.hit(t, ray(-10, B + 1e-6, 0, 1, 0, 0)));
+        ShadeRec above = scratch.hit(t, ray(-10, B + 1e-6, 0, 1, 0, 0));
+        assertNull(above, "Torus(2, 0.5), ray along +x at y = b + 1e-6, just above the top: it misses, but hit() recorded t = "
+                          + (above == null ? 0 : above.t));
         ShadeRec sr = scratch.hit(t, ray(-10, B - 1e-3, 0, 1, 0, 0));
-        assertNotNull(sr);
+        String below = "Torus(2, 0.5), ray from (-10, b - 1e-3, 0) along +x, just below the top: ";
+        assertNotNull(sr, below + "it must hit the tube");
         double x = -A - Math.sqrt(B * B - (B - 1e-3) * (B - 1e-3));
-        assertEquals(x + 10, sr.t, 1e-9);
+        assertEquals(x + 10, sr.t, 1e-9, below + "it meets the tube where the circle of radius b says, x = " + x);
     }
 
     @Test
     void shadowHitRespectsTMax() {
         GeometricObject t = torus(A, B);
         Ray r = ray(-10, 0, 0, 1, 0, 0);
-        assertTrue(t.shadowHit(r, 10 - (A + B) + 1e-6, scratch.sr));
-        assertFalse(t.shadowHit(r, 10 - (A + B) - 1e-6, scratch.sr));
-        assertFalse(t.shadowHit(ray(-10, 0, 0, -1, 0, 0), Double.POSITIVE_INFINITY, scratch.sr), "the torus is behind");
+        String ray = "Torus(2, 0.5), shadow ray from (-10, 0, 0) along +x, which meets it at t = 10 - (a + b) = 7.5: ";
+        assertTrue(t.shadowHit(r, 10 - (A + B) + 1e-6, scratch.sr), ray + "shadowHit(ray, 7.5 + 1e-6) must be true");
+        assertFalse(t.shadowHit(r, 10 - (A + B) - 1e-6, scratch.sr), ray + "shadowHit(ray, 7.5 - 1e-6) must be false: tMax ends it");
+        assertFalse(t.shadowHit(ray(-10, 0, 0, -1, 0, 0), Double.POSITIVE_INFINITY, scratch.sr),
+                    "Torus(2, 0.5), shadow ray from (-10, 0, 0) along -x: the torus is behind it");
     }
 
     @Test
@@ -126,10 +139,11 @@ class TorusExercise {
 
     @Test
     void badRadiiAreRefused() {
-        assertThrows(IllegalArgumentException.class, () -> torus(1, 0));
-        assertThrows(IllegalArgumentException.class, () -> torus(1, -0.5));
-        assertThrows(IllegalArgumentException.class, () -> torus(0.5, 1), "a ring torus needs a > b");
-        assertThrows(IllegalArgumentException.class, () -> torus(Double.NaN, 0.5));
+        String rule = ": a > b > 0, else IllegalArgumentException";
+        assertThrows(IllegalArgumentException.class, () -> torus(1, 0), "Torus(1, 0)" + rule);
+        assertThrows(IllegalArgumentException.class, () -> torus(1, -0.5), "Torus(1, -0.5)" + rule);
+        assertThrows(IllegalArgumentException.class, () -> torus(0.5, 1), "Torus(0.5, 1): a ring torus needs a > b" + rule);
+        assertThrows(IllegalArgumentException.class, () -> torus(Double.NaN, 0.5), "Torus(NaN, 0.5)" + rule);
     }
 
     /**
@@ -163,26 +177,28 @@ class TorusExercise {
                 continue; // grazing: the search did not settle
             }
             ShadeRec sr = scratch.hit(t, r);
-            String where = "ray " + i + " (a = " + a + ", b = " + b + ")";
+            String where = "random ray " + i + ", Torus(" + a + ", " + b + "), from (" + ox + ", " + oy + ", " + oz + ") along ("
+                           + r.dx + ", " + r.dy + ", " + r.dz + ")";
             if (expected == Double.POSITIVE_INFINITY) {
                 assertNull(sr, where + " misses the torus but a hit was reported at t = " + (sr == null ? 0 : sr.t));
                 continue;
             }
             assertNotNull(sr, where + " hits the torus at t = " + expected);
             hits++;
-            assertEquals(expected, sr.t, 1e-7 * s, where);
+            assertEquals(expected, sr.t, 1e-7 * s, where + ": the nearest root must be t = " + expected + " (sphere tracing), to 1e-7 of the scene");
             assertEquals(0, distance(a, b, sr.hitPoint.x, sr.hitPoint.y, sr.hitPoint.z),
                          1e-9 * s + sr.hitError.x + sr.hitError.y + sr.hitError.z, where + ": the hit point lies off the surface");
             assertTrue(sr.hitError.x >= 0 && sr.hitError.y >= 0 && sr.hitError.z >= 0 && sr.hitError.x < 1e-6 * s,
                        where + ": hitError must bound the hit point's rounding error, got " + sr.hitError);
             double[] n = gradient(a, sr.hitPoint.x, sr.hitPoint.y, sr.hitPoint.z);
             double along = Math.abs(n[0] * sr.normal.x + n[1] * sr.normal.y + n[2] * sr.normal.z);
-            assertEquals(1, along, 1e-7, where + ": the normal must be the surface's");
+            assertEquals(1, along, 1e-7, where + ": the normal must be the surface's, along the distance function's gradient ("
+                                         + n[0] + ", " + n[1] + ", " + n[2] + "), got " + sr.normal);
             assertTrue(r.dx * sr.normal.x + r.dy * sr.normal.y + r.dz * sr.normal.z < 0, where + ": the normal faces the ray");
             assertTrue(t.shadowHit(r, sr.t * (1 + 1e-6), scratch.sr) && !t.shadowHit(r, sr.t * (1 - 1e-6), scratch.sr),
-                       where + ": shadowHit must find the same hit");
+                       where + ": shadowHit must find the same hit, t = " + sr.t + " (true just beyond it, false just before)");
         }
-        assertTrue(hits > 1000, "too few hits to judge: " + hits);
+        assertTrue(hits > 1000, "too few hits to judge: " + hits + " of 5000 rays (more than 1000 expected)");
     }
 
     /**

@@ -95,7 +95,7 @@ public class AllocationStudyBenchmark {
     public static class PixelWalk {
         DefaultScene scene;
         WorkerScratch scratch;
-        Film film;
+        PixelSink sink;
         int width;
         int pixels;
         int next;
@@ -106,14 +106,14 @@ public class AllocationStudyBenchmark {
             scratch = scene.allocation.scratch(scene.world, scene.rayTree);
             width = scene.world.viewPlane().hres();
             pixels = width * scene.world.viewPlane().vres();
-            film = new Film(width, scene.world.viewPlane().vres());
+            sink = new BoxAverage(new Film(width, scene.world.viewPlane().vres()));
             next = (int) ((long) pixels * thread.getThreadIndex() / thread.getThreadCount());
         }
 
         void renderNext() {
             // a fixed pseudo-random walk, so that every part of the scene is measured
             next = (next + 7919) % pixels;
-            scene.renderer.renderPixel(next % width, next / width, scratch, film, null);
+            scene.renderer.renderPixel(next % width, next / width, scratch, sink);
         }
     }
 

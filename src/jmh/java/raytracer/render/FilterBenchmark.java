@@ -45,7 +45,7 @@ public class FilterBenchmark {
     private WorkerScratch scratch;
     private Film film;
     private List<int[]> tiles;
-    private FilteredTile[] sums;
+    private PixelSink[] sums;
     private int tile;
     private int x;
     private int y;
@@ -61,11 +61,11 @@ public class FilterBenchmark {
         renderer = new Renderer(world, loaded.rayTree(), workers, 1);
         scratch = new WorkerScratch(world, loaded.rayTree());
         film = new Film(world.viewPlane().hres(), world.viewPlane().vres());
-        tiles = Renderer.tiles(world.viewPlane().hres(), world.viewPlane().vres());
-        sums = new FilteredTile[tiles.size()];
+        tiles = TileOrder.tiles(world.viewPlane().hres(), world.viewPlane().vres());
+        sums = new PixelSink[tiles.size()];
         for (int i = 0; i < tiles.size(); i++) {
             int[] t = tiles.get(i);
-            sums[i] = pixelFilter.isBox() ? null : new FilteredTile(pixelFilter, t[0], t[1], t[2], t[3]);
+            sums[i] = pixelFilter.isBox() ? new BoxAverage(film) : new FilteredTile(pixelFilter, t[0], t[1], t[2], t[3]);
         }
         x = tiles.get(0)[0];
         y = tiles.get(0)[1];
@@ -78,7 +78,7 @@ public class FilterBenchmark {
 
     @Benchmark
     public void pixel() {
-        renderer.renderPixel(x, y, scratch, film, sums[tile]);
+        renderer.renderPixel(x, y, scratch, sums[tile]);
         // the next pixel of this tile, row by row, then the next tile of the renderer's order
         int[] t = tiles.get(tile);
         if (++x == t[2]) {

@@ -50,7 +50,7 @@ public class PixelBenchmark {
     private Workers workers;
     private Renderer renderer;
     private WorkerScratch scratch;
-    private Film film;
+    private PixelSink pixels;
     private int width;
     private int height;
     private int next;
@@ -69,7 +69,7 @@ public class PixelBenchmark {
         scratch = new WorkerScratch(world, loaded.rayTree());
         width = world.viewPlane().hres();
         height = world.viewPlane().vres();
-        film = new Film(width, height);
+        pixels = new BoxAverage(new Film(width, height));
     }
 
     @TearDown
@@ -87,6 +87,6 @@ public class PixelBenchmark {
     public void pixel() {
         // walk the image in a fixed pseudo-random order so that all parts of the scene are measured
         next = (next + 7919) % (width * height);
-        renderer.renderPixel(next % width, next / width, scratch, film, null);
+        renderer.renderPixel(next % width, next / width, scratch, pixels);
     }
 }

@@ -1,8 +1,10 @@
 package raytracer.accel;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.stream.Collectors;
 import raytracer.core.GeometricObject;
 
 /**
@@ -25,7 +27,8 @@ public final class Aggregation {
             try {
                 return valueOf(text.trim().toUpperCase(Locale.ROOT));
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("unknown acceleration '" + text + "'; allowed: auto, list, median, sah");
+                throw new IllegalArgumentException("unknown acceleration '" + text + "'; allowed: " + Arrays.stream(values())
+                    .map(m -> m.name().toLowerCase(Locale.ROOT)).collect(Collectors.joining(", ")));
             }
         }
     }

@@ -47,7 +47,7 @@ public final class GlossySpecular implements BRDF {
 
     /**
      * Suffern's sample_f (chapter 25): picks wi around the mirror direction r of wo with density
-     * (e + 1) / (2 pi) cos^e(alpha) (phi = 2 pi u, cos(alpha) = (1 - v)^(1/(e+1)); SPEC section 2)
+     * (e + 1) / (2 pi) cos^e(alpha) (phi = 2 pi u, cos(alpha) = (1 - v)^(1/(e+1)); the report's section 2.1)
      * and writes the weight f cos(theta_i) / pdf = ks cs 2 pi / (e + 1) cos(theta_i) for the
      * report's lobe (cos^e cancels; times (e + 2) / (2 pi) when normalised). A direction below the
      * surface gives false and a black weight, and still counts as a sample (docs/brdf-params.md).

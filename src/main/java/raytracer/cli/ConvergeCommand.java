@@ -70,9 +70,9 @@ final class ConvergeCommand implements Callable<Integer> {
     List<Double> budgets = new ArrayList<>();
 
     @Option(names = "--config", paramLabel = "KEY=VALUE[,...]",
-            description = "A configuration (repeat for more): sampler=NAME (" + "regular, random, jittered, n-rooks, multi-jittered, "
-                          + "correlated-multi-jittered, hammersley, sobol), light-samples=N per area light, cutoff=C, label=TEXT; a/b in a value makes one "
-                          + "configuration per alternative. Default: the scene's own settings.")
+            description = "A configuration (repeat for more): sampler=NAME (a name --sampler takes), light-samples=N per "
+                          + "area light, cutoff=C, label=TEXT; a/b in a value makes one configuration per alternative. "
+                          + "Default: the scene's own settings.")
     List<String> configs = new ArrayList<>();
 
     @Option(names = "--reference", paramLabel = "REF",
@@ -184,8 +184,8 @@ final class ConvergeCommand implements Callable<Integer> {
         // with --csv -, standard output is the CSV alone, and the table is a note
         PrintWriter out = csvToStdout ? note : spec.commandLine().getOut();
         out.print(ConvergeReport.table(rows));
-        ConvergeReport.slopes(rows).forEach((name, slope) -> out.printf(Locale.ROOT,
-            "slope of log error against log seconds, %s: %.2f%n", name, slope));
+        ConvergeReport.slopes(rows).forEach((name, slope) -> out.println(
+            "slope of log error against log seconds, " + name + ": " + slope.describe()));
         // the reference's noise is known in linear units only
         double noise = displayedMetric() ? Double.NaN : ref.noiseRmse();
         out.println("reference: " + ref.what() + ConvergeReport.noiseNote(noise, rows.get(0).error().referenceMean()));

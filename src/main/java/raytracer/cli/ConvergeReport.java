@@ -90,43 +90,26 @@ final class ConvergeReport {
     }
 
     /**
-     * Per configuration, the least-squares slope of log(error) against log(seconds): -0.5 is the
-     * rate of independent random sampling; configurations with fewer than two usable points have none.
+     * Per configuration, the least-squares slope of log(error) against log(seconds) with its
+     * standard error ({@link FittedSlope}): -0.5 is the rate of independent random sampling;
+     * configurations with fewer than two usable points have none.
      */
-    static Map<String, Double> slopes(List<ConvergeRow> rows) {
-        Map<String, Double> slopes = new LinkedHashMap<>();
+    static Map<String, FittedSlope> slopes(List<ConvergeRow> rows) {
+        Map<String, FittedSlope> slopes = new LinkedHashMap<>();
         byConfig(rows).forEach((name, list) -> {
             double[][] xy = points(list);
             if (xy[0].length >= 2) {
-                slopes.put(name, slope(xy[0], xy[1]));
+                slopes.put(name, FittedSlope.of(xy[0], xy[1]));
             }
         });
         return slopes;
     }
 
-    /** The least-squares slope of log10(y) against log10(x). */
-    static double slope(double[] x, double[] y) {
-        int n = x.length;
-        double mx = 0;
-        double my = 0;
-        for (int i = 0; i < n; i++) {
-            mx += Math.log10(x[i]) / n;
-            my += Math.log10(y[i]) / n;
-        }
-        double sxy = 0;
-        double sxx = 0;
-        for (int i = 0; i < n; i++) {
-            double dx = Math.log10(x[i]) - mx;
-            sxy += dx * (Math.log10(y[i]) - my);
-            sxx += dx * dx;
-        }
-        return sxx > 0 ? sxy / sxx : Double.NaN;
-    }
-
     /**
      * The error (relative RMSE; the RMSE when the reference is black) against seconds, one curve
-     * per configuration, a dashed guide of slope -1/2 through the first curve's first point, and,
-     * when {@code referenceNoise} (an RMSE) is positive, a level line at the reference's own noise.
+     * per configuration with each point labelled by its samples per pixel, a dashed guide of slope
+     * -1/2 through the first curve's first point, and, when {@code referenceNoise} (an RMSE) is
+     * positive, a level line at the reference's own noise.
      */
     static LogLogChart chart(String title, List<ConvergeRow> rows, double referenceNoise) {
         List<Series> series = new ArrayList<>();
@@ -134,7 +117,7 @@ final class ConvergeReport {
         double maxSeconds = 0;
         for (Map.Entry<String, List<ConvergeRow>> entry : byConfig(rows).entrySet()) {
             double[][] xy = points(entry.getValue());
-            series.add(new Series(entry.getKey(), xy[0], xy[1]));
+            series.add(new Series(entry.getKey(), xy[0], xy[1], false, sppLabels(entry.getValue())));
             for (double s : xy[0]) {
                 minSeconds = Math.min(minSeconds, s);
                 maxSeconds = Math.max(maxSeconds, s);
@@ -166,6 +149,19 @@ final class ConvergeReport {
         Map<String, List<ConvergeRow>> map = new LinkedHashMap<>();
         rows.forEach(r -> map.computeIfAbsent(r.config(), k -> new ArrayList<>()).add(r));
         return map;
+    }
+
+    /** "16 spp" for each row that {@link #points} keeps, in its order. */
+    private static List<String> sppLabels(List<ConvergeRow> rows) {
+        boolean relative = relative(rows);
+        List<String> labels = new ArrayList<>();
+        for (ConvergeRow r : rows) {
+            double error = relative ? r.error().relativeRmse() : r.error().rmse();
+            if (r.seconds() > 0 && error > 0) {
+                labels.add(r.spp() + " spp");
+            }
+        }
+        return labels;
     }
 
     /** Seconds and error of the rows whose both are positive, the only ones a log-log plot can place. */

@@ -4,9 +4,10 @@ import picocli.CommandLine.Option;
 
 /** The pixel-filter options that render and converge share (a picocli mixin). */
 final class FilterOptions {
-    @Option(names = "--filter", paramLabel = "NAME",
-            description = "How pixels are made from samples (overrides the scene): box (the book's: the average of the pixel's own "
-                          + "samples) or gaussian (standard deviation 0.5 pixel, radius 2: less noise, slightly softer).")
+    @Option(names = "--filter", paramLabel = "NAME", completionCandidates = OptionNames.FilterNames.class,
+            description = "How pixels are made from samples (overrides the scene): ${COMPLETION-CANDIDATES}. box is the book's "
+                          + "(the average of the pixel's own samples), gaussian has a standard deviation of 0.5 pixel and a radius "
+                          + "of 2 (less noise, slightly softer).")
     String filter;
 
     @Option(names = "--filter-stddev", paramLabel = "S",

@@ -40,9 +40,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = {"-s", "--spp"}, paramLabel = "N", description = "Samples per pixel (overrides the scene).")
     Integer samples;
 
-    @Option(names = "--sampler", paramLabel = "NAME",
-            description = "Sample pattern (overrides the scene): " + "regular, random, jittered, n-rooks, multi-jittered, "
-                          + "correlated-multi-jittered, hammersley or sobol.")
+    @Option(names = "--sampler", paramLabel = "NAME", completionCandidates = OptionNames.SamplerNames.class,
+            description = "Sample pattern (overrides the scene): ${COMPLETION-CANDIDATES}.")
     String sampler;
 
     @Mixin
@@ -75,9 +74,9 @@ public final class RenderCommand implements Callable<Integer> {
                           + "magenta-reflection or no-fresnel. Default: the scene's, else full.")
     String pass;
 
-    @Option(names = "--accel", paramLabel = "MODE",
-            description = "Search structure for the scene's objects: auto (default; a BVH from "
-                          + Aggregation.AUTO_THRESHOLD + " bounded objects on), list, median or sah.")
+    @Option(names = "--accel", paramLabel = "MODE", completionCandidates = OptionNames.AccelerationNames.class,
+            description = "Search structure for the scene's objects: ${COMPLETION-CANDIDATES}. Default: auto (a BVH from "
+                          + Aggregation.AUTO_THRESHOLD + " bounded objects on).")
     String accel = "auto";
 
     @Option(names = "--no-skip",

@@ -16,7 +16,7 @@ public final class Gaussian implements PixelFilter {
     public static final double MIN_STDDEV = 0.2;
     /**
      * The widest: a sample then reaches 8 pixels each way, 289 pixels in all, within the half tile
-     * that the renderer gathers from (Renderer.checkFilter).
+     * that the renderer gathers from (render.FilteredImage.check).
      */
     public static final double MAX_STDDEV = 2;
     /**

@@ -10,8 +10,9 @@ import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 
 /**
- * A point light of intensity I = ls c: it gives irradiance I cos(theta) / r^2 (SPEC section 2), so
- * {@link #L} returns I / r^2 and the material multiplies by cos(theta).
+ * A point light of intensity I = ls c: it gives irradiance I cos(theta) / r^2 (the inverse-square
+ * law; Suffern's point light of section 14.4 has no falloff, a departure listed in
+ * docs/teaching.md), so {@link #L} returns I / r^2 and the material multiplies by cos(theta).
  */
 public final class PointLight extends Light {
     private final double px;

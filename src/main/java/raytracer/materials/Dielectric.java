@@ -16,7 +16,6 @@ import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
-import raytracer.math.Ray;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 
@@ -105,13 +104,13 @@ public final class Dielectric extends Material {
             // the refracted part (wi holds its direction); the branch's weight includes the
             // transmittance of the segment that ended here
             if (r < 1 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t * tr, t * tg, t * tb)) {
-                trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
+                BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
                 out.addProduct(incoming, RGBColor.WHITE, t);
             }
             // the mirror part, R (all of it under total internal reflection)
             if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r * tr, r * tg, r * tb)) {
                 mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
-                trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+                BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
                 out.addProduct(incoming, weight, r);
             }
         }
@@ -122,15 +121,6 @@ public final class Dielectric extends Material {
         }
     }
 
-    /** Traces the hit's refracted or reflected ray ({@code branch}, a {@link PixelSamples} slot) in {@code direction}. */
-    private static void trace(ShadeRec sr, MutableVec3 direction, int branch, WorkerScratch scratch, MutableRgb out, Background environment) {
-        int depth = sr.depth + 1;
-        Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
-        scratch.samples.branch(sr.depth, branch, 0, 1);
-        scratch.secondaryRays++;
-        scratch.setEnvironment(depth, environment);
-        sr.world.tracer().traceRay(ray, depth, scratch, out);
-    }
 
     @Override
     public boolean needsReflection() {

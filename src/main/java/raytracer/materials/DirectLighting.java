@@ -4,8 +4,6 @@ import java.util.List;
 import raytracer.core.BRDF;
 import raytracer.core.Light;
 import raytracer.core.PixelSamples;
-import raytracer.core.RayTreePolicy;
-import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
 import raytracer.core.Skip;
 import raytracer.core.Skipped;
@@ -16,30 +14,26 @@ import raytracer.math.MutableVec3;
 
 /**
  * The direct light of a lit material, ambient plus a diffuse and an optional specular lobe, in the
- * book's two forms: {@link #shade} takes each light from its one direction (Suffern, chapters 14
- * and 15: L = rho_a La + sum over lights of f L cos(theta_i)), {@link #areaLightShade} averages
- * each light's samples (chapter 18: f L G cos(theta_i) / pdf, with G = pdf = 1 for lights without
- * extent, so both give the same for them). A light is skipped when it is behind the surface or a
- * shadow ray finds an occluder. {@link #simplified} leaves out the terms that are zero at every
- * hit; each would have added +0, so the image is the same to the bit.
+ * book's two forms: {@link #shade} takes each light from its one direction (Suffern's Matte::shade
+ * and Phong::shade, sections 14.7 and 15.5: L = rho_a La + sum over lights of f L cos(theta_i)),
+ * {@link #areaLightShade} averages each light's samples (chapter 18's area_light_shade:
+ * f L G cos(theta_i) / pdf, with G = pdf = 1 for lights without extent, so both give the same for
+ * them). {@link #addSample} is the body of the book's loop: a light behind the surface or behind
+ * an occluder adds nothing.
+ *
+ * <p>Beyond the book, each in a helper of its own so that those three read as the book's: the
+ * report's variant of the terms ({@link LightingTerms}); the adaptive cutoff, which leaves out a
+ * sample too faint to change the pixel before its shadow ray is traced ({@link #negligible}); a
+ * glossy reflector's highlight weighed against its glossy rays ({@link GlossyLightMis}); and
+ * {@link #simplified}, which leaves out the terms that are zero at every hit of a scene (each
+ * would have added +0, so the image is the same to the bit) and counts the work it saves.
  */
 final class DirectLighting {
-
-    /** Which lobes a light sample lights, and how. */
-    enum Terms {
-        /** (f_d + f_s) cos(theta_i), the integrand of the reflection equation. */
-        PHYSICAL,
-        /**
-         * The report's quirks (docs/brdf-params.md), for its figure 2's brightness: f_d pi cos(theta_i)
-         * + f_s, the diffuse term without its 1/pi and the specular one without cos(theta_i).
-         */
-        REPORT
-    }
 
     private final BRDF ambient;
     private final BRDF diffuse;
     private final BRDF specular;
-    private final Terms terms;
+    private final LightingTerms terms;
     /**
      * For a glossy reflector: how its lobe's term for a light sample is weighed against its glossy
      * rays, which may find the same light (null: every light is found by its samples alone).
@@ -53,21 +47,21 @@ final class DirectLighting {
     private final boolean dark;
 
     /** {@code specular} may be null (a matte surface). */
-    DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms) {
+    DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, LightingTerms terms) {
         this(ambient, diffuse, specular, terms, null, false, false, false);
     }
 
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular) {
-        this(ambient, diffuse, specular, Terms.PHYSICAL);
+        this(ambient, diffuse, specular, LightingTerms.PHYSICAL);
     }
 
     /** The direct light of a glossy reflector, whose glossy rays also find visible area lights ({@link GlossyLightMis}). */
     DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, GlossyLightMis mis) {
-        this(ambient, diffuse, specular, Terms.PHYSICAL, mis, false, false, false);
+        this(ambient, diffuse, specular, LightingTerms.PHYSICAL, mis, false, false, false);
     }
 
-    private DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, Terms terms, GlossyLightMis mis, boolean ambientZero,
-                           boolean diffuseZero, boolean specularZero) {
+    private DirectLighting(BRDF ambient, BRDF diffuse, BRDF specular, LightingTerms terms, GlossyLightMis mis,
+                           boolean ambientZero, boolean diffuseZero, boolean specularZero) {
         this.ambient = ambient;
         this.diffuse = diffuse;
         this.specular = specular;
@@ -77,6 +71,223 @@ final class DirectLighting {
         this.diffuseZero = diffuseZero;
         this.specularZero = specularZero;
         this.dark = ambientZero && diffuseZero && (specular == null || specularZero);
+    }
+
+    /** Suffern's shade: writes into {@code L} the ambient term plus each light's, from its one direction. */
+    void shade(ShadeRec sr, MutableRgb L) {
+        if (!ambient(sr, L)) {
+            return;
+        }
+        if (dark) {
+            countUnlit(sr, false);
+            return;
+        }
+        for (Light light : sr.world.lights()) {
+            double distance = light.getDirection(sr, sr.wi);
+            addSample(sr, light, distance, 1, 1, 1, L);
+        }
+    }
+
+    /**
+     * Suffern's area_light_shade: writes into {@code L} the ambient term plus, for each light, the
+     * average over its samples of f L G cos(theta_i) / pdf (one sample for lights without extent).
+     * A light with extent takes the values of its dimension, stratified across the pixel's samples
+     * ({@link PixelSamples}), as many as the ray tree's policy gives a hit at this depth.
+     */
+    void areaLightShade(ShadeRec sr, MutableRgb L) {
+        if (!ambient(sr, L)) {
+            return;
+        }
+        if (dark) {
+            countUnlit(sr, true);
+            return;
+        }
+        for (Light light : sr.world.lights()) {
+            if (!light.mayIlluminate(sr)) {
+                continue; // every sample would weigh nothing: draw none
+            }
+            int n = samplesAt(sr, light);
+            int strata = strata(sr, light);
+            for (int j = 0; j < n; j++) {
+                double distance = sampleLight(sr, light, j, strata);
+                double g = light.G(sr) / light.pdf(sr);
+                if (g > 0) {
+                    addSample(sr, light, distance, g, 1.0 / n, n, L);
+                }
+            }
+        }
+    }
+
+    /**
+     * The book's loop body for the light sample in direction sr.wi, {@code distance} away: adds
+     * f L g cos(theta_i) {@code weight} to {@code L} unless the light is behind the surface or a
+     * shadow ray finds an occluder; g is G / pdf, {@code weight} 1 / samples and {@code samples}
+     * the light's sample count at this hit. The unshadowed contribution is computed first: when it
+     * could not change the pixel by the cutoff (Hall and Greenberg 1983), the shadow ray is not
+     * traced and the sample is left out.
+     */
+    private void addSample(ShadeRec sr, Light light, double distance, double g, double weight, int samples, MutableRgb L) {
+        MutableVec3 wi = sr.wi;
+        double nDotWi = sr.normal.dot(wi);
+        // the geometric normal decides which side the light is on, so bumped normals do not leak
+        if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
+            return;
+        }
+        MutableRgb f = reflectance(sr, light, g, samples, nDotWi);
+        MutableRgb incident = sr.scratch.lightScratch;
+        light.L(sr, incident);
+        if (negligible(sr, f, incident, g) || shadowed(sr, light, distance)) {
+            return;
+        }
+        L.addProduct(f, incident, g * weight);
+    }
+
+    /**
+     * Sets sr.wo and writes the ambient term rho_a La into {@code L}; false, with {@code L}
+     * black, when the pass hides this hit's direct light.
+     */
+    private boolean ambient(ShadeRec sr, MutableRgb L) {
+        WorkerScratch scratch = sr.scratch;
+        MutableVec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
+        if (!scratch.policy.showsDirect(sr.depth)) {
+            L.setBlack();
+            return false;
+        }
+        if (ambientZero) {
+            scratch.skipped[Skipped.AMBIENT_TERMS]++;
+            L.setBlack();
+            return true;
+        }
+        MutableRgb f = scratch.brdfScratch;
+        MutableRgb incident = scratch.lightScratch;
+        ambient.rho(sr, wo, f);
+        sr.world.ambient().L(sr, incident);
+        L.setBlack().addProduct(f, incident, 1);
+        return true;
+    }
+
+    /** How many samples of the light's dimension a pixel spreads its hits' samples across: the light's full count as the sampler rounds it. */
+    private static int strata(ShadeRec sr, Light light) {
+        return light.hasExtent() ? sr.world.viewPlane().sampler().supportedCount(light.sampleCount()) : 1;
+    }
+
+    /**
+     * Writes the direction of light sample {@code j} into sr.wi and returns the distance to it: the
+     * light's one direction, or, for a light with extent, the point of its surface that the pixel's
+     * sample values of the light's dimension pick ({@code strata} of them across the pixel).
+     */
+    private static double sampleLight(ShadeRec sr, Light light, int j, int strata) {
+        if (!light.hasExtent()) {
+            return light.getDirection(sr, sr.wi);
+        }
+        PixelSamples samples = sr.scratch.samples;
+        samples.get2D(sr.depth, PixelSamples.LIGHT + light.number(), j, strata);
+        return light.sample(sr, samples.u, samples.v, sr.wi);
+    }
+
+    /** How many samples of {@code light} a hit draws: one without extent, else the ray tree's count at its depth as the sampler rounds it. */
+    private static int samplesAt(ShadeRec sr, Light light) {
+        if (!light.hasExtent()) {
+            return 1;
+        }
+        return sr.world.viewPlane().sampler().supportedCount(sr.scratch.policy.lightSamples(sr.depth, light.sampleCount()));
+    }
+
+    /**
+     * The BRDF's factor for the sample in direction sr.wi, in the worker's BRDF scratch:
+     * f cos(theta_i) with f the diffuse term plus the specular lobe, or the report's variant
+     * ({@link LightingTerms}). 1 / g is the sample's density over solid angle, for a glossy lobe's weight.
+     */
+    private MutableRgb reflectance(ShadeRec sr, Light light, double g, int samples, double nDotWi) {
+        MutableRgb f = sr.scratch.brdfScratch;
+        if (diffuseZero) {
+            sr.scratch.skipped[Skipped.DIFFUSE_TERMS]++;
+            f.setBlack();
+        } else {
+            diffuse.f(sr, sr.wo, sr.wi, f);
+        }
+        terms.combine(f, lobe(sr, light, g, samples), nDotWi);
+        return f;
+    }
+
+    /**
+     * The specular lobe's value f_s for the sample, in the worker's specular scratch, or null
+     * without a lobe (or with one that is zero at every hit, counted): a glossy reflector's weighed
+     * against its glossy rays for a light with extent ({@link GlossyLightMis}).
+     */
+    private MutableRgb lobe(ShadeRec sr, Light light, double g, int samples) {
+        if (specular == null) {
+            return null;
+        }
+        if (specularZero) {
+            sr.scratch.skipped[Skipped.SPECULAR_LOBES]++;
+            return null;
+        }
+        MutableRgb fs = sr.scratch.specularScratch;
+        if (mis != null && light.hasExtent()) {
+            mis.weightedLobe(sr, light, 1 / g, samples, fs);
+        } else {
+            specular.f(sr, sr.wo, sr.wi, fs);
+        }
+        return fs;
+    }
+
+    /**
+     * True when the sample's f L g, its estimate of the light's whole contribution, could not change
+     * the pixel by the cutoff (Hall and Greenberg 1983): one left out loses less than cutoff /
+     * samples, so a hit loses less than the cutoff per light.
+     */
+    private static boolean negligible(ShadeRec sr, MutableRgb f, MutableRgb incident, double g) {
+        return sr.scratch.policy.negligible(sr.depth, f.r * incident.r * g, f.g * incident.g * g, f.b * incident.b * g);
+    }
+
+    /**
+     * True when something blocks the light ({@link Light#inShadow}); a light whose shadow rays the
+     * scene analysis proved unblockable traces none, and counts it.
+     */
+    private static boolean shadowed(ShadeRec sr, Light light, double distance) {
+        if (light.castsShadows()) {
+            return light.inShadow(sr, distance);
+        }
+        if (light.shadowRaysLeftOut()) {
+            sr.scratch.skipped[Skipped.SHADOW_RAYS]++;
+        }
+        return false;
+    }
+
+    /**
+     * Counts the light samples a dark surface (no term reflects direct light) does not draw: one per
+     * light from its direction, or, by area_light_shade, those of each light that could reach it.
+     */
+    private static void countUnlit(ShadeRec sr, boolean areaLights) {
+        long[] skipped = sr.scratch.skipped;
+        for (Light light : sr.world.lights()) {
+            if (!areaLights) {
+                skipped[Skipped.LIGHT_SAMPLES]++;
+            } else if (light.mayIlluminate(sr)) {
+                // nothing to draw: each sample value is a function of its index, so no later one moves
+                skipped[Skipped.LIGHT_SAMPLES] += samplesAt(sr, light);
+            }
+        }
+    }
+
+    /**
+     * How many samples of {@code light} this hit draws whose lobe term covers direction
+     * {@code wi}: the light's count at this depth when the hit shows direct light, reflects it with
+     * a specular lobe and the light can reach it from wi (in front of both normals); else 0. A
+     * glossy ray that finds the light's surface in direction wi weighs its radiance against them.
+     */
+    int lightSamplesToward(ShadeRec sr, Light light, MutableVec3 wi) {
+        if (dark || specular == null || specularZero || !sr.scratch.policy.showsDirect(sr.depth) || !light.hasExtent()
+            || !(sr.normal.dot(wi) > 0) || !(sr.geometricNormal.dot(wi) > 0) || !light.mayIlluminate(sr)) {
+            return 0;
+        }
+        for (Light l : sr.world.lights()) {
+            if (l == light) {
+                return samplesAt(sr, light);
+            }
+        }
+        return 0;
     }
 
     /**
@@ -112,174 +323,5 @@ final class DirectLighting {
             }
         }
         return result;
-    }
-
-    /** Suffern's shade: writes into {@code out} the ambient term plus each light's, from its one direction. */
-    void shade(ShadeRec sr, MutableRgb out) {
-        if (!ambient(sr, out)) {
-            return;
-        }
-        if (dark) {
-            sr.scratch.skipped[Skipped.LIGHT_SAMPLES] += sr.world.lights().length;
-            return;
-        }
-        for (Light light : sr.world.lights()) {
-            addSample(sr, light, light.getDirection(sr, sr.wi), specular, 1, 1, 1, out);
-        }
-    }
-
-    /**
-     * Suffern's area_light_shade: writes into {@code out} the ambient term plus, for each light, the
-     * average over its samples of f L G cos(theta_i) / pdf (one sample for lights without extent).
-     * A light with extent takes the values of its dimension, stratified across the pixel's samples
-     * ({@link PixelSamples}), as many as the ray tree's policy gives a hit at this depth.
-     */
-    void areaLightShade(ShadeRec sr, MutableRgb out) {
-        if (!ambient(sr, out)) {
-            return;
-        }
-        WorkerScratch scratch = sr.scratch;
-        PixelSamples samples = scratch.samples;
-        MutableVec3 wi = sr.wi;
-        for (Light light : sr.world.lights()) {
-            if (!light.mayIlluminate(sr)) {
-                continue; // every sample would weigh nothing: draw none
-            }
-            if (!light.hasExtent()) {
-                if (dark) {
-                    scratch.skipped[Skipped.LIGHT_SAMPLES]++;
-                } else {
-                    addSample(sr, light, light.getDirection(sr, wi), specular, 1, 1, 1, out);
-                }
-                continue;
-            }
-            Sampler sampler = sr.world.viewPlane().sampler();
-            int most = sampler.supportedCount(light.sampleCount());
-            int n = sampler.supportedCount(scratch.policy.lightSamples(sr.depth, light.sampleCount()));
-            if (dark) {
-                // nothing to draw: each sample value is a function of its index, so no later one moves
-                scratch.skipped[Skipped.LIGHT_SAMPLES] += n;
-                continue;
-            }
-            for (int s = 0; s < n; s++) {
-                samples.get2D(sr.depth, PixelSamples.LIGHT + light.number(), s, most);
-                double distance = light.sample(sr, samples.u, samples.v, wi);
-                double g = light.G(sr) / light.pdf(sr);
-                if (g > 0) {
-                    addSample(sr, light, distance, specular, g, 1.0 / n, n, out);
-                }
-            }
-        }
-    }
-
-    /**
-     * Sets sr.wo and writes the ambient term rho_a La into {@code out}; false, with {@code out}
-     * black, when the pass hides this hit's direct light.
-     */
-    private boolean ambient(ShadeRec sr, MutableRgb out) {
-        WorkerScratch scratch = sr.scratch;
-        MutableVec3 wo = sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
-        if (!scratch.policy.showsDirect(sr.depth)) {
-            out.setBlack();
-            return false;
-        }
-        if (ambientZero) {
-            scratch.skipped[Skipped.AMBIENT_TERMS]++;
-            out.setBlack();
-            return true;
-        }
-        MutableRgb f = scratch.brdfScratch;
-        MutableRgb incident = scratch.lightScratch;
-        ambient.rho(sr, wo, f);
-        sr.world.ambient().L(sr, incident);
-        out.setBlack().addProduct(f, incident, 1);
-        return true;
-    }
-
-    /**
-     * How many samples of {@code light} this hit draws whose lobe term covers direction
-     * {@code wi}: the light's count at this depth when the hit shows direct light, reflects it with
-     * a specular lobe and the light can reach it from wi (in front of both normals); else 0. A
-     * glossy ray that finds the light's surface in direction wi weighs its radiance against them.
-     */
-    int lightSamplesToward(ShadeRec sr, Light light, MutableVec3 wi) {
-        if (dark || specular == null || specularZero || !sr.scratch.policy.showsDirect(sr.depth) || !light.hasExtent()
-            || !(sr.normal.dot(wi) > 0) || !(sr.geometricNormal.dot(wi) > 0) || !light.mayIlluminate(sr)) {
-            return 0;
-        }
-        for (Light l : sr.world.lights()) {
-            if (l == light) {
-                Sampler sampler = sr.world.viewPlane().sampler();
-                return sampler.supportedCount(sr.scratch.policy.lightSamples(sr.depth, light.sampleCount()));
-            }
-        }
-        return 0;
-    }
-
-    /**
-     * Adds f L g cos(theta_i) {@code weight} for the light sample in direction sr.wi, where g is
-     * G / pdf, {@code weight} 1 / samples and {@code samples} the light's sample count at this hit.
-     * The unshadowed contribution is computed first: when it could not change the pixel by the
-     * cutoff (Hall and Greenberg 1983), the shadow ray is not traced and the sample is left out.
-     */
-    private void addSample(ShadeRec sr, Light light, double distance, BRDF lobe, double g, double weight, int samples,
-                           MutableRgb out) {
-        WorkerScratch scratch = sr.scratch;
-        MutableVec3 wi = sr.wi;
-        double nDotWi = sr.normal.dot(wi);
-        // the geometric normal decides which side the light is on, so bumped normals do not leak
-        if (nDotWi <= 0 || sr.geometricNormal.dot(wi) <= 0) {
-            return;
-        }
-        MutableRgb f = scratch.brdfScratch;
-        MutableRgb incident = scratch.lightScratch;
-        if (diffuseZero) {
-            scratch.skipped[Skipped.DIFFUSE_TERMS]++;
-            f.setBlack();
-        } else {
-            diffuse.f(sr, sr.wo, wi, f);
-        }
-        light.L(sr, incident);
-        if (terms == Terms.REPORT) {
-            f.scale(Math.PI * nDotWi);
-            addLobe(sr, light, lobe, g, samples, f);
-        } else {
-            addLobe(sr, light, lobe, g, samples, f);
-            f.scale(nDotWi);
-        }
-        // f L g, with f now holding the factor that reaches the viewer, is this sample's estimate of
-        // the light's whole contribution; one left out below the cutoff loses less than
-        // cutoff / samples, so a hit loses less than the cutoff per light
-        RayTreePolicy policy = scratch.policy;
-        if (policy.negligible(sr.depth, f.r * incident.r * g, f.g * incident.g * g, f.b * incident.b * g)) {
-            return;
-        }
-        if (light.castsShadows()) {
-            if (light.inShadow(sr, distance)) {
-                return;
-            }
-        } else if (light.shadowRaysLeftOut()) {
-            scratch.skipped[Skipped.SHADOW_RAYS]++;
-        }
-        out.addProduct(f, incident, g * weight);
-    }
-
-    /**
-     * Adds the lobe's value for the sample to f: a glossy reflector's weighed against its glossy
-     * rays for a light with extent ({@link GlossyLightMis}; 1 / g is the sample's density over
-     * solid angle, {@code samples} the light's count at this hit).
-     */
-    private void addLobe(ShadeRec sr, Light light, BRDF lobe, double g, int samples, MutableRgb f) {
-        if (lobe != null && specularZero) {
-            sr.scratch.skipped[Skipped.SPECULAR_LOBES]++;
-        } else if (lobe != null) {
-            MutableRgb fs = sr.scratch.specularScratch;
-            if (mis != null && light.hasExtent()) {
-                mis.weightedLobe(sr, light, 1 / g, samples, fs);
-            } else {
-                lobe.f(sr, sr.wo, sr.wi, fs);
-            }
-            f.add(fs);
-        }
     }
 }

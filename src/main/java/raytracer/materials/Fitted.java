@@ -24,7 +24,7 @@ public final class Fitted extends Material {
 
     public Fitted(RGBColor rhoD, BRDF specular, double ka, boolean seedCompatible) {
         this.lighting = new DirectLighting(new Lambertian(ka, rhoD), new Lambertian(1, rhoD), specular,
-                                           seedCompatible ? DirectLighting.Terms.REPORT : DirectLighting.Terms.PHYSICAL);
+                                           seedCompatible ? LightingTerms.REPORT : LightingTerms.PHYSICAL);
     }
 
     public static Fitted of(FittedPreset preset, double ka, boolean seedCompatible) {

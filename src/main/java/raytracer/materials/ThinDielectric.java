@@ -17,7 +17,6 @@ import raytracer.math.Fresnel;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
 import raytracer.math.RGBColor;
-import raytracer.math.Ray;
 
 /**
  * A thin sheet of glass (a window pane, a glass quad): a slab of index {@code ior} too thin to
@@ -93,27 +92,17 @@ public final class ThinDielectric extends Material {
         MutableRgb incoming = scratch.color(next);
         if (t > 0 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t, t, t)) {
             wi.set(sr.ray.dx, sr.ray.dy, sr.ray.dz);
-            trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
+            BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
             out.addProduct(incoming, RGBColor.WHITE, t);
         }
         if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r, r, r)) {
             MutableRgb weight = scratch.weight(sr.depth);
             mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
-            trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+            BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
             out.addProduct(incoming, weight, r);
         }
     }
 
-    /** Traces the hit's transmitted or reflected ray ({@code branch}, a {@link PixelSamples} slot) in {@code direction}. */
-    private static void trace(ShadeRec sr, MutableVec3 direction, int branch, WorkerScratch scratch, MutableRgb out,
-                              Background environment) {
-        int depth = sr.depth + 1;
-        Ray ray = sr.spawnRay(direction.x, direction.y, direction.z, scratch.ray(depth));
-        scratch.samples.branch(sr.depth, branch, 0, 1);
-        scratch.secondaryRays++;
-        scratch.setEnvironment(depth, environment);
-        sr.world.tracer().traceRay(ray, depth, scratch, out);
-    }
 
     @Override
     public boolean needsReflection() {

@@ -2,8 +2,11 @@ package raytracer.math;
 
 /**
  * A small mutable random generator (SplitMix64 seeding a 64-bit state, as in Steele, Lea and Flood,
- * "Fast splittable pseudorandom number generators", OOPSLA 2014). The renderer reseeds it per pixel
- * from (seed, pixel) so that an image never depends on which thread rendered which tile.
+ * "Fast splittable pseudorandom number generators", OOPSLA 2014). It is reseeded, never shared, so
+ * that an image does not depend on which thread rendered which tile: the render's sample tables
+ * draw each set of points from one seeded by (seed, pattern size, set) ({@code core.SampleTables}),
+ * and the renderer reseeds each worker's free generator for every pixel sample from the sample's
+ * key ({@code core.PixelSamples.sampleKey}), for the few draws outside the sampled dimensions.
  */
 public final class Rng {
     private long state;
@@ -14,11 +17,6 @@ public final class Rng {
 
     public void reseed(long seed) {
         state = mix(seed);
-    }
-
-    /** Seed for one pixel: a hash of the scene seed and the pixel index, the same on every thread. */
-    public static long pixelSeed(long seed, int x, int y) {
-        return mix(seed * 0x9E3779B97F4A7C15L + ((long) y << 32 | (x & 0xffffffffL)));
     }
 
     public long nextLong() {

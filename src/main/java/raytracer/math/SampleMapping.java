@@ -33,7 +33,8 @@ public final class SampleMapping {
 
     /**
      * Maps [0,1)^2 onto the hemisphere around +z with density proportional to cos^e(theta)
-     * (Suffern, eq. 7.11 / SPEC section 2): phi = 2 pi sx, cos(theta) = (1 - sy)^(1/(e+1)).
+     * (Suffern, eq. 7.11; the report's section 2.1 draws its glossy rays so): phi = 2 pi sx,
+     * cos(theta) = (1 - sy)^(1/(e+1)).
      */
     public static void toHemisphere(double sx, double sy, double e, MutableVec3 out) {
         double cosTheta = Math.pow(1 - sy, 1 / (e + 1));

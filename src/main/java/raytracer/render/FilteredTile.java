@@ -2,6 +2,7 @@ package raytracer.render;
 
 import raytracer.core.PixelFilter;
 import raytracer.image.Film;
+import raytracer.math.MutableRgb;
 
 /**
  * The weighted sums that the samples of one tile leave, under a filter wider than a pixel, in the
@@ -9,9 +10,9 @@ import raytracer.image.Film;
  * neighbouring tiles). Per pixel: the sums of w r, w g, w b and of w. A pixel's value is the sum
  * over every tile that reached it divided by the summed weight, added up after the render in the
  * order of the tile list, so the floating-point sums, and the image, do not depend on which thread
- * rendered which tile or when it finished.
+ * rendered which tile or when it finished ({@link FilteredImage}).
  */
-final class FilteredTile {
+final class FilteredTile implements PixelSink {
     private final PixelFilter filter;
     private final int reach;
     /** The pixel at the margin's top-left corner, and the rows' width and count with the margin. */
@@ -23,6 +24,9 @@ final class FilteredTile {
     /** The weights of the current sample per column and row offset -reach .. reach. */
     private final double[] wx;
     private final double[] wy;
+    /** The pixel whose samples are being added. */
+    private int x;
+    private int y;
 
     /** For the tile of pixels x0 .. x1 - 1, y0 .. y1 - 1. */
     FilteredTile(PixelFilter filter, int x0, int y0, int x1, int y1) {
@@ -37,11 +41,27 @@ final class FilteredTile {
         this.wy = new double[2 * reach + 1];
     }
 
+    @Override
+    public void startPixel(int x, int y) {
+        this.x = x;
+        this.y = y;
+    }
+
+    @Override
+    public void add(double u, double v, MutableRgb L) {
+        add(x, y, u, v, L.r, L.g, L.b);
+    }
+
+    @Override
+    public void endPixel() {
+        // the pixel's value is made once every tile that reaches it is done (FilteredImage)
+    }
+
     /**
      * Adds a sample of radiance (r, g, b) taken at (x + fx, y + fy) in pixel (x, y) of this tile,
      * 0 &lt;= fx, fy &lt; 1, to every pixel whose centre lies within the filter's radius of it.
      */
-    void add(int x, int y, double fx, double fy, double r, double g, double b) {
+    private void add(int x, int y, double fx, double fy, double r, double g, double b) {
         // the pixel k columns over has its centre at x + k + 0.5, |k + 0.5 - fx| from the sample
         for (int k = -reach; k <= reach; k++) {
             wx[k + reach] = filter.weight(k + 0.5 - fx);
@@ -65,14 +85,6 @@ final class FilteredTile {
                 sums[at + 3] += w;
             }
         }
-    }
-
-    /**
-     * Adds a sample that is left out (not finite) as black: its weight counts, as the box filter
-     * divides by all the samples of a pixel.
-     */
-    void addBlack(int x, int y, double fx, double fy) {
-        add(x, y, fx, fy, 0, 0, 0);
     }
 
     /**

@@ -2,6 +2,7 @@ package raytracer.render;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Stream;
 import raytracer.core.Camera;
 import raytracer.core.GeometricObject;
 import raytracer.core.Light;
@@ -198,8 +199,14 @@ public final class SceneAnalysis {
         }
     }
 
+    /**
+     * True when no shadow ray from inside {@code h} leaves it: asked of every light, and of the
+     * ambient light, which casts shadows when it traces rays of its own (ambient occlusion,
+     * docs/teaching.md exercise 4) and then cannot say where they go.
+     */
     private boolean shadowsStayWithin(HalfSpace h) {
-        return world.lightList().stream().allMatch(light -> !light.castsShadows() || light.keepsShadowRaysWithin(h));
+        return Stream.concat(world.lightList().stream(), Stream.of(world.ambient()))
+            .allMatch(light -> !light.castsShadows() || light.keepsShadowRaysWithin(h));
     }
 
     /**

@@ -9,9 +9,9 @@ import raytracer.core.GeometricObject;
  * first few hundred rays did, and throws it away (an {@code unstable_if} trap, then a recompile)
  * when a branch it never saw taken is taken: the first tiles must show every kind of ray.
  *
- * <p>{@link #spread}: the row-major list permuted by bit reversal of the index (van der Corput), so
- * that every aligned run of 2^k successive tiles, each half the split hands a worker among them,
- * is spread over the whole image (taken row by row, the first tiles were a strip of floor or sky,
+ * <p>{@link #tiles}: the row-major list permuted by bit reversal of the index (van der Corput), so
+ * that every aligned run of 2^k successive tiles, each half the fork/join split hands a worker
+ * among them ({@link TileRange}), is spread over the whole image (taken row by row, the first tiles were a strip of floor or sky,
  * where a shadow ray never meets a triangle behind its origin: docs/performance.md, "Tile order").
  *
  * <p>{@link #warmUpFirst}: spread over the image is not enough when an object fills only part of
@@ -21,14 +21,19 @@ import raytracer.core.GeometricObject;
  * the first render. So the tiles are first ranked by how many objects their camera rays can meet
  * ({@link TileObjects}), most first (row-major among equals), and that ranking is dealt out by bit
  * reversal: the first tile of every half, quarter, ... of the list is among the richest. With every
- * tile as rich as the others this is {@link #spread} itself.
+ * tile as rich as the others this is {@link #tiles} itself.
  */
 final class TileOrder {
     private TileOrder() {
     }
 
-    /** The tiles (x0, y0, x1, y1) of a width x height image, row-major permuted by bit reversal. */
-    static List<int[]> spread(int width, int height, int size) {
+    /**
+     * The tiles (x0, y0, x1, y1) of a width x height image, {@link Renderer#TILE_SIZE} pixels square
+     * or cut by its edge, row-major permuted by bit reversal: the order in which a wide filter's sums
+     * are added ({@link FilteredImage}), and the order of rendering but for {@link #warmUpFirst}.
+     */
+    static List<int[]> tiles(int width, int height) {
+        int size = Renderer.TILE_SIZE;
         List<int[]> rowMajor = new ArrayList<>();
         for (int y = 0; y < height; y += size) {
             for (int x = 0; x < width; x += size) {
@@ -58,7 +63,7 @@ final class TileOrder {
     }
 
     /**
-     * The positions in {@code tiles} (a {@link #spread} list of a grid whose tiles are {@code size}
+     * The positions in {@code tiles} (a {@link #tiles} list of a grid whose tiles are {@code size}
      * pixels wide) in the order to render them: ranked by the number of objects each tile's camera
      * rays can meet ({@code objects[i]}, null meaning all {@code everything} of them; no ranking
      * when {@code objects} is null), ties row-major, and dealt out by bit reversal.

@@ -32,7 +32,7 @@ public enum AllocationMode {
      */
     public void install(World world, RayTreeSettings rayTree) {
         if (this == IMMUTABLE) {
-            Whitted whitted = Translation.whitted(world, rayTree);
+            ImmutableWhitted whitted = Translation.whitted(world, rayTree);
             world.setTracer(w -> whitted);
         }
     }

@@ -10,7 +10,7 @@ import raytracer.tracers.RayCast;
 
 /**
  * A prepared scene of the renderer in the textbook's terms: its materials and lights as the
- * study's values, under the study's Whitted tracer. What the immutable path does not have is
+ * study's values, under the study's ImmutableWhitted tracer. What the immutable path does not have is
  * refused with one message naming it, never rendered differently.
  */
 final class Translation {
@@ -22,7 +22,7 @@ final class Translation {
     }
 
     /** The textbook tracer for {@code world}, which must be prepared; the materials of objects inside instances and meshes are translated when first hit. */
-    static Whitted whitted(World world, RayTreeSettings rayTree) {
+    static ImmutableWhitted whitted(World world, RayTreeSettings rayTree) {
         if (!rayTree.equals(RayTreeSettings.FULL_TREE)) {
             throw refuse("pass '" + rayTree.pass().key() + "' with cutoff " + rayTree.cutoff());
         }
@@ -37,7 +37,7 @@ final class Translation {
             throw refuse("tracer " + name(tracer));
         }
         raytracer.core.Light[] sources = world.lights();
-        Light[] lights = new Light[sources.length];
+        ImmutableLight[] lights = new ImmutableLight[sources.length];
         for (int i = 0; i < sources.length; i++) {
             lights[i] = light(sources[i]);
         }
@@ -50,20 +50,20 @@ final class Translation {
                 materials.of(object.getMaterial());
             }
         }
-        return new Whitted(world, maxDepth, shadedDepth, lights, ambient.radiance(), materials);
+        return new ImmutableWhitted(world, maxDepth, shadedDepth, lights, ambient.radiance(), materials);
     }
 
-    private static Light light(raytracer.core.Light light) {
+    private static ImmutableLight light(raytracer.core.Light light) {
         if (light instanceof raytracer.lights.PointLight p) {
-            return new PointLight(p.position(), p.intensity(), p.castsShadows());
+            return new ImmutablePointLight(p.position(), p.intensity(), p.castsShadows());
         }
         if (light instanceof raytracer.lights.Directional d) {
-            return new Directional(d.towardLight(), d.radiance(), d.castsShadows());
+            return new ImmutableDirectional(d.towardLight(), d.radiance(), d.castsShadows());
         }
         throw refuse("light " + name(light));
     }
 
-    static Material material(raytracer.core.Material material) {
+    static ImmutableMaterial material(raytracer.core.Material material) {
         if (material instanceof raytracer.materials.Matte m) {
             return phong(m.ka(), m.kd(), m.cd(), null);
         }
@@ -77,20 +77,20 @@ final class Translation {
             if (r.reflectionMap() != null) {
                 throw refuse("reflective material with a reflection map");
             }
-            return new Reflective(phong(r.ka(), r.kd(), r.cd(), lobe(r.specular())), r.mirror().reflectance());
+            return new ImmutableReflective(phong(r.ka(), r.kd(), r.cd(), lobe(r.specular())), r.mirror().reflectance());
         }
         throw refuse("material " + name(material));
     }
 
-    private static Phong phong(double ka, double kd, RGBColor cd, GlossySpecular specular) {
+    private static ImmutablePhong phong(double ka, double kd, RGBColor cd, ImmutableGlossySpecular specular) {
         if (cd == null) {
             throw refuse("textured material");
         }
-        return new Phong(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
+        return new ImmutablePhong(new ImmutableLambertian(ka, cd), new ImmutableLambertian(kd, cd), specular);
     }
 
-    private static GlossySpecular lobe(raytracer.brdf.GlossySpecular lobe) {
-        return new GlossySpecular(lobe.cs(), lobe.scale(), lobe.exp());
+    private static ImmutableGlossySpecular lobe(raytracer.brdf.GlossySpecular lobe) {
+        return new ImmutableGlossySpecular(lobe.cs(), lobe.scale(), lobe.exp());
     }
 
     private static String name(Object o) {
@@ -108,12 +108,12 @@ final class Translation {
      * so workers read it without a lock.
      */
     static final class Materials {
-        private record Entry(raytracer.core.Material from, Material to) {
+        private record Entry(raytracer.core.Material from, ImmutableMaterial to) {
         }
 
         private volatile Entry[] entries = new Entry[0];
 
-        Material of(raytracer.core.Material material) {
+        ImmutableMaterial of(raytracer.core.Material material) {
             for (Entry e : entries) {
                 if (e.from() == material) {
                     return e.to();
@@ -122,7 +122,7 @@ final class Translation {
             return add(material);
         }
 
-        private synchronized Material add(raytracer.core.Material material) {
+        private synchronized ImmutableMaterial add(raytracer.core.Material material) {
             for (Entry e : entries) {
                 if (e.from() == material) {
                     return e.to();

@@ -9,6 +9,8 @@
  * point and directional lights, ambient light and Whitted's tracer. It searches with the renderer's
  * own BVHs and two-phase hits, so every mode computes the same numbers in the same order and the
  * images are bitwise equal; only what is allocated differs.
+ * Its classes are the book's, named {@code Immutable...} ({@link raytracer.study.ImmutableWhitted},
+ * {@link raytracer.study.ImmutablePhong}, ...) so that none shares a name with the renderer's.
  *
  * <p>Nothing in the renderer uses this package: it exists for the study's benchmark and test.
  */

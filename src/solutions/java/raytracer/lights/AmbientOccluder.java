@@ -24,7 +24,7 @@ public final class AmbientOccluder extends Light {
         }
         this.radiance = color.scale(ls);
         this.samples = samples;
-        setCastsShadows(false);
+        // it casts shadows (the default), so the scene analysis keeps what could occlude it
     }
 
     /** Ambient light has no one direction. */

@@ -57,11 +57,28 @@ class ConvergeReportTest {
 
     @Test
     void slopesOfExactPowerLaws() {
-        Map<String, Double> slopes = ConvergeReport.slopes(rows());
-        assertEquals(-0.5, slopes.get("a"), 1e-12);
-        assertEquals(-1, slopes.get("b"), 1e-12);
+        Map<String, FittedSlope> slopes = ConvergeReport.slopes(rows());
+        assertEquals(-0.5, slopes.get("a").slope(), 1e-12);
+        assertEquals(0, slopes.get("a").standardError(), 1e-12, "three points on a line: no scatter");
+        assertEquals("-0.50 +/- 0.00 (standard error, 3 points; below five points the error itself is rough)",
+                     slopes.get("a").describe());
+        assertEquals(-1, slopes.get("b").slope(), 1e-12);
+        assertEquals("not fitted: 2 points leave nothing to judge a slope by (give five or more sample counts)",
+                     slopes.get("b").describe(), "two points fit any line");
         // one point has no slope
         assertTrue(ConvergeReport.slopes(List.of(row("c", 1, 1, 1))).isEmpty());
+    }
+
+    @Test
+    void theSlopesStandardErrorIsTheTextbooks() {
+        // log10 x = 0, 1, 2, 3, 4 and log10 y = 0, -0.6, -0.9, -1.6, -2.0: slope -0.5, residuals
+        // 0.02, -0.08, 0.12, -0.08, 0.02 (sum of squares 0.028), s^2 = 0.028 / 3, Sxx = 10, se = 0.0306
+        double[] x = {1, 10, 100, 1000, 10000};
+        double[] y = {1, Math.pow(10, -0.6), Math.pow(10, -0.9), Math.pow(10, -1.6), Math.pow(10, -2.0)};
+        FittedSlope fit = FittedSlope.of(x, y);
+        assertEquals(-0.5, fit.slope(), 1e-12);
+        assertEquals(Math.sqrt(0.028 / 3 / 10), fit.standardError(), 1e-12);
+        assertEquals("-0.50 +/- 0.03 (standard error, 5 points)", fit.describe());
     }
 
     @Test
@@ -90,6 +107,7 @@ class ConvergeReportTest {
         assertEquals(3, series.size());
         assertEquals("a", series.get(0).name());
         assertEquals(3, series.get(0).x().length);
+        assertEquals(List.of("1 spp", "4 spp", "16 spp"), series.get(0).labels(), "each point labelled with its samples per pixel");
         Series guide = series.get(2);
         assertTrue(guide.guide());
         // through the first point of "a", spanning all times, falling as t^-1/2

@@ -209,9 +209,9 @@ class RenderCommandTest {
 
     @Test
     void theSpotSceneRendersFromTheRepositoryAlone() throws IOException {
-        // scenes/spot.yaml reads assets/spot: a quad mesh, its .obj.mtl and map_Kd texture
+        // scenes/spot-cow.yaml reads assets/spot: a quad mesh, its .obj.mtl and map_Kd texture
         Path out = dir.resolve("spot.png");
-        Result r = run("scenes/spot.yaml", "-o", out.toString(), "-W", "80", "-H", "60", "--spp", "1");
+        Result r = run("scenes/spot-cow.yaml", "-o", out.toString(), "-W", "80", "-H", "60", "--spp", "1");
         assertEquals(0, r.code(), r.err());
         assertFalse(r.err().toLowerCase(java.util.Locale.ROOT).contains("warning"), r.err());
         BufferedImage image = ImageIO.read(out.toFile());

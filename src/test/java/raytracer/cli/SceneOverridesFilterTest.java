@@ -8,6 +8,7 @@ import raytracer.cameras.Pinhole;
 import raytracer.core.PixelFilter;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
+import raytracer.filters.Filters;
 import raytracer.filters.Gaussian;
 import raytracer.lights.Ambient;
 import raytracer.math.Point3D;
@@ -30,7 +31,7 @@ class SceneOverridesFilterTest {
 
     @Test
     void badChoicesSayWhatIsWrong() {
-        assertEquals("unknown --filter 'mitchell'; allowed: box, gaussian",
+        assertEquals("unknown --filter 'mitchell'; allowed: " + String.join(", ", Filters.names()),
                      assertThrows(IllegalArgumentException.class, () -> FilterChoice.parse("mitchell", null)).getMessage());
         assertEquals("--filter-stddev is for --filter gaussian, not box",
                      assertThrows(IllegalArgumentException.class, () -> FilterChoice.parse("box", 1.0)).getMessage());

@@ -42,7 +42,7 @@ class TileObjectsTest {
         int width = 150;
         int height = 100;
         ViewPlane vp = new ViewPlane(width, height, 1, Samplers.byName("regular"), 0, 1);
-        List<int[]> tiles = Renderer.tiles(width, height);
+        List<int[]> tiles = TileOrder.tiles(width, height);
         long listed = 0;
         long all = 0;
         long hits = 0; // of spheres and boxes
@@ -86,7 +86,7 @@ class TileObjectsTest {
     void aWideApertureFindsEveryHitAmongTheTilesObjects() {
         SplittableRandom random = new SplittableRandom(22);
         ViewPlane vp = new ViewPlane(150, 100, 1, Samplers.byName("regular"), 0, 1);
-        List<int[]> tiles = Renderer.tiles(150, 100);
+        List<int[]> tiles = TileOrder.tiles(150, 100);
         long listed = 0;
         long all = 0;
         long hits = 0;
@@ -187,9 +187,9 @@ class TileObjectsTest {
         world.addObject(new Sphere(new Point3D(0.9, 0.9, 0), 0.1));
         world.addObject(new Sphere(new Point3D(-0.9, -0.9, 0), 0.1));
         world.prepare();
-        assertNull(TileObjects.of(world, Renderer.tiles(64, 64)));
+        assertNull(TileObjects.of(world, TileOrder.tiles(64, 64)));
         world.searchByTile();
-        GeometricObject[][] perTile = TileObjects.of(world, Renderer.tiles(64, 64));
+        GeometricObject[][] perTile = TileObjects.of(world, TileOrder.tiles(64, 64));
         assertEquals(4, perTile.length);
         int listed = 0;
         for (GeometricObject[] seen : perTile) {

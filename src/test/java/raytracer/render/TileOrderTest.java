@@ -17,7 +17,7 @@ class TileOrderTest {
             int width = size[0];
             int height = size[1];
             int[] covered = new int[width * height];
-            List<int[]> tiles = Renderer.tiles(width, height);
+            List<int[]> tiles = TileOrder.tiles(width, height);
             for (int[] t : tiles) {
                 assertTrue(t[0] < t[2] && t[1] < t[3] && t[2] <= width && t[3] <= height, "a tile inside the image");
                 for (int y = t[1]; y < t[3]; y++) {
@@ -41,7 +41,7 @@ class TileOrderTest {
         // list (the split's), and its first eighth must already reach all four quarters
         int width = 1920;
         int height = 1080;
-        List<int[]> tiles = Renderer.tiles(width, height);
+        List<int[]> tiles = TileOrder.tiles(width, height);
         int half = tiles.size() / 2;
         for (int from : new int[] {0, half}) {
             Set<Integer> quarters = new HashSet<>();
@@ -60,7 +60,7 @@ class TileOrderTest {
      */
     @Test
     void theRichestTilesStartEveryHalfAndAnOrderOfEqualsIsTheSpread() {
-        List<int[]> tiles = Renderer.tiles(1920, 1080);
+        List<int[]> tiles = TileOrder.tiles(1920, 1080);
         int n = tiles.size();
         int[] alike = TileOrder.warmUpFirst(tiles, null, 2, Renderer.TILE_SIZE);
         for (int i = 0; i < n; i++) {

@@ -112,7 +112,7 @@ class AllocationModeTest {
             Tracer loadedTracer = world.tracer();
             mode.install(world, loaded.rayTree());
             if (mode == AllocationMode.IMMUTABLE) {
-                assertInstanceOf(Whitted.class, world.tracer(), "the immutable mode traces with the study's own tracer");
+                assertInstanceOf(ImmutableWhitted.class, world.tracer(), "the immutable mode traces with the study's own tracer");
             } else {
                 assertSame(loadedTracer, world.tracer());
             }

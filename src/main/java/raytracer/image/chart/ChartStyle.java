@@ -17,6 +17,8 @@ import raytracer.image.AtomicFile;
 /** What both charts share: a white page, grey grid lines, the legend below, PNG output through a temporary file. */
 final class ChartStyle {
     static final Color GRID = new Color(0xD0D0D0);
+    /** The labels written beside points: dark grey, readable over any curve's colour. */
+    static final Color LABEL = new Color(0x404040);
     static final BasicStroke GRID_STROKE = new BasicStroke(0.8f);
     static final BasicStroke MINOR_GRID_STROKE = new BasicStroke(0.5f);
 

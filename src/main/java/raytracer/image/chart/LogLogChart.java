@@ -5,6 +5,7 @@ import java.awt.Font;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -16,8 +17,9 @@ import org.jfree.data.xy.XYSeriesCollection;
 
 /**
  * A line chart with both axes logarithmic over whole decades (see {@link DecadeAxis}), one coloured
- * curve with markers per measured series, guides dashed grey, the legend below. Points whose x or
- * y is not positive cannot be placed on a log axis and are left out.
+ * curve with markers per measured series (and a label at each point when the series has them),
+ * guides dashed grey, the legend below. Points whose x or y is not positive cannot be placed on a
+ * log axis and are left out.
  */
 public record LogLogChart(String title, String xLabel, String yLabel, List<Series> series) {
     private static final float LINE_WIDTH = 2f;
@@ -52,14 +54,21 @@ public record LogLogChart(String title, String xLabel, String yLabel, List<Serie
         for (int i = 0; i < series.size(); i++) {
             Series s = series.get(i);
             XYSeries points = new XYSeries(s.name(), false, true);
+            List<String> labels = new ArrayList<>();
             double[] x = s.x();
             double[] y = s.y();
             for (int j = 0; j < x.length; j++) {
                 if (x[j] > 0 && y[j] > 0 && Double.isFinite(x[j]) && Double.isFinite(y[j])) {
                     points.add(x[j], y[j]);
+                    if (s.labels() != null) {
+                        labels.add(s.labels().get(j));
+                    }
                 }
             }
             data.addSeries(points);
+            if (s.labels() != null) {
+                label(renderer, i, labels);
+            }
             if (s.guide()) {
                 renderer.setSeriesPaint(i, Palette.GUIDE);
                 renderer.setSeriesStroke(i, new BasicStroke(LINE_WIDTH, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
@@ -84,6 +93,14 @@ public record LogLogChart(String title, String xLabel, String yLabel, List<Serie
         plot.setDomainMinorGridlineStroke(ChartStyle.MINOR_GRID_STROKE);
         plot.setRangeMinorGridlineStroke(ChartStyle.MINOR_GRID_STROKE);
         return ChartStyle.chart(title, plot);
+    }
+
+    /** Writes labels.get(j) above point j of series {@code index}, in the axes' font. */
+    private static void label(XYLineAndShapeRenderer renderer, int index, List<String> labels) {
+        renderer.setSeriesItemLabelGenerator(index, (dataset, series, item) -> labels.get(item));
+        renderer.setSeriesItemLabelsVisible(index, true);
+        renderer.setSeriesItemLabelFont(index, new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        renderer.setSeriesItemLabelPaint(index, ChartStyle.LABEL);
     }
 
     private static DecadeAxis axis(String label, double[] values) {

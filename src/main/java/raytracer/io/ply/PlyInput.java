@@ -67,17 +67,11 @@ abstract class PlyInput {
 
         @Override
         double real(PlyType type) throws IOException {
+            if (type.isInteger()) {
+                return integer(type);
+            }
             need(type.size);
-            return switch (type) {
-                case CHAR -> buffer.get();
-                case UCHAR -> buffer.get() & 0xff;
-                case SHORT -> buffer.getShort();
-                case USHORT -> buffer.getShort() & 0xffff;
-                case INT -> buffer.getInt();
-                case UINT -> buffer.getInt() & 0xffffffffL;
-                case FLOAT -> buffer.getFloat();
-                case DOUBLE -> buffer.getDouble();
-            };
+            return type == PlyType.FLOAT ? buffer.getFloat() : buffer.getDouble();
         }
 
         @Override

@@ -1,6 +1,7 @@
 package raytracer.image.chart;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -14,6 +15,9 @@ import java.util.stream.IntStream;
 import javax.imageio.ImageIO;
 import org.jfree.chart.axis.NumberTick;
 import org.jfree.chart.axis.TickType;
+import org.jfree.chart.labels.XYItemLabelGenerator;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.renderer.xy.XYItemRenderer;
 import org.jfree.chart.ui.RectangleEdge;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -108,6 +112,25 @@ class ChartTest {
         assertEquals(2, chart.chart().getXYPlot().getDataset().getItemCount(0));
         BufferedImage image = chart.draw(300, 200);
         assertTrue(count(image, Palette.colour(0)) > 20);
+    }
+
+    @Test
+    void pointsCarryTheirLabelsAndALeftOutPointTakesItsLabelAlong() {
+        LogLogChart chart = new LogLogChart("t", "x", "y", List.of(
+            new Series("a", new double[] {1, 2, 0, 4}, new double[] {1, 2, 3, 4}, false, List.of("1 spp", "4 spp", "16 spp", "64 spp")),
+            new Series("b", new double[] {1, 4}, new double[] {2, 3})));
+        XYPlot plot = chart.chart().getXYPlot();
+        XYItemRenderer renderer = plot.getRenderer();
+        XYItemLabelGenerator labels = renderer.getSeriesItemLabelGenerator(0);
+        assertTrue(renderer.isSeriesItemLabelsVisible(0));
+        assertEquals(List.of("1 spp", "4 spp", "64 spp"), List.of(labels.generateLabel(plot.getDataset(), 0, 0),
+                                                                  labels.generateLabel(plot.getDataset(), 0, 1),
+                                                                  labels.generateLabel(plot.getDataset(), 0, 2)),
+                     "the point at x = 0 cannot be drawn: its label goes with it");
+        assertFalse(renderer.isSeriesItemLabelsVisible(1), "a series without labels shows none");
+        // drawn, the labels add dark grey text beside the points
+        assertTrue(count(chart.draw(400, 300), ChartStyle.LABEL) > 20, "no label text drawn");
+        assertThrows(IllegalArgumentException.class, () -> new Series("c", new double[] {1, 2}, new double[] {1, 2}, false, List.of("x")));
     }
 
     @Test

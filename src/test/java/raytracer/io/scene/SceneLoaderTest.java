@@ -149,7 +149,7 @@ class SceneLoaderTest {
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
         unknown key in an object     | - {type: sphere, center: [0, 0, 0], radus: 1}                   | s.yaml:8:39: | unknown key 'radus' in sphere; allowed: casts-shadows, center, material, radius, transform, type
-        unknown object type          | - {type: torus}                                                  | s.yaml:8:12: | torus'; allowed: box, cylinder, mesh, plane, sphere, triangle
+        unknown object type          | - {type: teapot}                                                 | s.yaml:8:12: | teapot'; allowed: box, cylinder, mesh, plane, sphere
         negative radius              | - {type: sphere, center: [0, 0, 0], radius: -1}                  | s.yaml:8:47: | 'radius' in sphere must be greater than 0, got -1
         zero radius                  | - {type: sphere, center: [0, 0, 0], radius: 0}                   | s.yaml:8:47: | greater than 0
         NaN coordinate               | - {type: sphere, center: [0, .nan, 0]}                           | s.yaml:8:32: | must be a finite number, got '.nan'
@@ -181,7 +181,7 @@ class SceneLoaderTest {
                       "'max-depth' in image must be at most 1000, got 100000");
         assertMessage(error(BASE.replace("exposure: 2", "exposure: 0")), "s.yaml:1:", "'exposure'", "greater than 0");
         assertMessage(error(BASE.replace("sampler: jittered", "sampler: poisson-disk")), "s.yaml:1:", "poisson-disk", "multi-jittered");
-        assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, filter, filter-stddev, height");
+        assertMessage(error(BASE.replace("image: {", "image: {colour: 1, ")), "s.yaml:1:9:", "'colour'", "allowed: cutoff, encoding, exposure, filter", "filter-stddev, height");
         assertMessage(error(BASE.replace("image: {", "image: {filter: mitchell, ")), "s.yaml:1:", "'mitchell'", "allowed: box, gaussian");
         assertMessage(error(BASE.replace("image: {", "image: {filter-stddev: 1, ")), "s.yaml:1:", "'filter-stddev'",
                       "for filter: gaussian, not box");
@@ -195,7 +195,7 @@ class SceneLoaderTest {
     @Test
     void otherSectionsAreChecked() {
         assertMessage(error("camera: {fov: 190}\n" + BASE), "s.yaml:1:9:", "field of view");
-        assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "orthographic, pinhole, thin-lens");
+        assertMessage(error("camera: {type: fisheye}\n" + BASE), "s.yaml:1:16:", "fisheye", "allowed: orthographic, pinhole", "thin-lens");
         assertMessage(error("camera: {type: orthographic, fov: 30}\n" + BASE), "s.yaml:1:30:", "'fov'", "view-height");
         assertMessage(error("camera: {eye: [0, 0, 0], look-at: [0, 0, 0]}\n" + BASE), "s.yaml:1:9:", "must differ");
         // so far apart that the distance's square overflows: w would come out zero, and every ray with it
@@ -204,8 +204,8 @@ class SceneLoaderTest {
         assertMessage(error("background: [1, -1, 0]\n" + BASE), "s.yaml:1:13:", "negative");
         assertMessage(error("skybox: x\n" + BASE), "s.yaml:1:1:", "'skybox'", "allowed: ambient, background, camera");
         assertMessage(error(BASE.replace("intensity: 10", "intensity: -10")), "s.yaml:5:", "'intensity'");
-        assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: spot}")),
-                      "s.yaml:5:", "spot", "directional, disk, point, rectangle, sphere");
+        assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: laser}")),
+                      "s.yaml:5:", "laser", "allowed: directional, disk, point, rectangle, sphere");
         assertMessage(error(BASE.replace("{type: point, position: [0, 5, 0], intensity: 10}", "{type: point}")),
                       "s.yaml:5:", "needs the key 'position'");
         assertMessage(error(BASE.replace("{type: phong, color: [1, 0, 0]}", "{type: phong, exponent: 0}")),

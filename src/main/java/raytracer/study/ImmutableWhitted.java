@@ -14,17 +14,17 @@ import raytracer.math.Ray;
  * hits) in the worker's hit record, which the study asks to be a new one for every ray; from the
  * completed hit on, everything is a new value. Shading only depth 0, it is the ray-cast tracer.
  */
-final class Whitted implements Tracer {
+final class ImmutableWhitted implements Tracer {
     private final World world;
     /** The view plane's max depth: materials trace no deeper. */
     private final int maxDepth;
     /** The deepest rays that are shaded: maxDepth for Whitted, 0 for ray casting (Suffern, section 14.5). */
     private final int shadedDepth;
-    private final Light[] lights;
+    private final ImmutableLight[] lights;
     private final RGBColor ambient;
     private final Translation.Materials materials;
 
-    Whitted(World world, int maxDepth, int shadedDepth, Light[] lights, RGBColor ambient, Translation.Materials materials) {
+    ImmutableWhitted(World world, int maxDepth, int shadedDepth, ImmutableLight[] lights, RGBColor ambient, Translation.Materials materials) {
         this.world = world;
         this.maxDepth = maxDepth;
         this.shadedDepth = shadedDepth;
@@ -62,7 +62,7 @@ final class Whitted implements Tracer {
         return maxDepth;
     }
 
-    Light[] lights() {
+    ImmutableLight[] lights() {
         return lights;
     }
 

@@ -4,7 +4,7 @@ import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 
 /** Light from one direction with no falloff (Suffern, section 14.4.1). */
-record Directional(Vector3D towardLight, RGBColor radiance, boolean castsShadows) implements Light {
+record ImmutableDirectional(Vector3D towardLight, RGBColor radiance, boolean castsShadows) implements ImmutableLight {
 
     @Override
     public Incidence incidence(Hit hit) {

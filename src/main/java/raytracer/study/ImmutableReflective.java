@@ -5,21 +5,21 @@ import raytracer.math.Ray;
 import raytracer.math.Vector3D;
 
 /**
- * Phong plus a perfect mirror (Suffern, section 24.3): the radiance traced along the mirror
+ * {@link ImmutablePhong} plus a perfect mirror (Suffern, section 24.3): the radiance traced along the mirror
  * direction, times kr cr, added to the direct light; a new ray and new colours for every bounce.
  */
-final class Reflective implements Material {
-    private final Phong direct;
+final class ImmutableReflective implements ImmutableMaterial {
+    private final ImmutablePhong direct;
     /** kr cr. */
     private final RGBColor reflectance;
 
-    Reflective(Phong direct, RGBColor reflectance) {
+    ImmutableReflective(ImmutablePhong direct, RGBColor reflectance) {
         this.direct = direct;
         this.reflectance = reflectance;
     }
 
     @Override
-    public RGBColor shade(Hit hit, Whitted whitted) {
+    public RGBColor shade(Hit hit, ImmutableWhitted whitted) {
         RGBColor L = direct.shade(hit, whitted);
         int next = hit.depth() + 1;
         if (next > whitted.maxDepth()) {

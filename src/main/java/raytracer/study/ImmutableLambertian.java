@@ -3,7 +3,7 @@ package raytracer.study;
 import raytracer.math.RGBColor;
 
 /** Perfect diffuse reflection, f = kd cd / pi and rho = kd cd (Suffern, section 13.9), as new colours. */
-record Lambertian(double kd, RGBColor cd) {
+record ImmutableLambertian(double kd, RGBColor cd) {
 
     RGBColor f() {
         return cd.scale(kd / Math.PI);

@@ -7,7 +7,7 @@ import raytracer.math.Vector3D;
  * Phong's lobe, f = scale cs cos^e(alpha) with alpha between wo and the mirror direction of wi
  * (report eq. 1, Suffern section 15.3), in values: scale is ks, or ks (e + 2) / (2 pi) normalised.
  */
-record GlossySpecular(RGBColor cs, double scale, double exp) {
+record ImmutableGlossySpecular(RGBColor cs, double scale, double exp) {
 
     RGBColor f(Hit hit, Vector3D wi) {
         Vector3D n = hit.normal();

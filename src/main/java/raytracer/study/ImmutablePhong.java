@@ -9,23 +9,23 @@ import raytracer.math.Vector3D;
  * steps are the renderer's (materials.DirectLighting.shade) in the same order, so the sums agree
  * to the bit.
  */
-final class Phong implements Material {
-    private final Lambertian ambient;
-    private final Lambertian diffuse;
-    private final GlossySpecular specular;
+final class ImmutablePhong implements ImmutableMaterial {
+    private final ImmutableLambertian ambient;
+    private final ImmutableLambertian diffuse;
+    private final ImmutableGlossySpecular specular;
 
     /** {@code specular} may be null: a matte surface. */
-    Phong(Lambertian ambient, Lambertian diffuse, GlossySpecular specular) {
+    ImmutablePhong(ImmutableLambertian ambient, ImmutableLambertian diffuse, ImmutableGlossySpecular specular) {
         this.ambient = ambient;
         this.diffuse = diffuse;
         this.specular = specular;
     }
 
     @Override
-    public RGBColor shade(Hit hit, Whitted whitted) {
+    public RGBColor shade(Hit hit, ImmutableWhitted whitted) {
         RGBColor L = ambient.rho().mul(whitted.ambient());
-        for (Light light : whitted.lights()) {
-            Light.Incidence incidence = light.incidence(hit);
+        for (ImmutableLight light : whitted.lights()) {
+            ImmutableLight.Incidence incidence = light.incidence(hit);
             Vector3D wi = incidence.wi();
             double nDotWi = hit.normal().dot(wi);
             // the geometric normal decides which side the light is on, as in the renderer
@@ -39,7 +39,7 @@ final class Phong implements Material {
             }
             f = f.scale(nDotWi);
             if (light.castsShadows()) {
-                Light.ShadowRay shadowRay = light.shadowRay(hit, incidence);
+                ImmutableLight.ShadowRay shadowRay = light.shadowRay(hit, incidence);
                 if (whitted.inShadow(shadowRay.ray(), shadowRay.tMax(), hit)) {
                     continue;
                 }

@@ -4,8 +4,8 @@ import raytracer.math.Point3D;
 import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 
-/** A point light of intensity I: irradiance I cos(theta) / r^2, so L is I / r^2 (SPEC section 2). */
-record PointLight(Point3D position, RGBColor intensity, boolean castsShadows) implements Light {
+/** A point light of intensity I: irradiance I cos(theta) / r^2, so L is I / r^2, as the renderer's PointLight. */
+record ImmutablePointLight(Point3D position, RGBColor intensity, boolean castsShadows) implements ImmutableLight {
 
     @Override
     public Incidence incidence(Hit hit) {

@@ -5,7 +5,7 @@ import raytracer.math.RGBColor;
 import raytracer.math.Vector3D;
 
 /** A light without extent (Suffern, chapter 14), answering in new values. */
-interface Light {
+interface ImmutableLight {
 
     /** The unit direction from {@code hit} towards the light and the distance to it (infinite for a directional light). */
     Incidence incidence(Hit hit);
