@@ -8,7 +8,7 @@ integrator, not our image.
 
     python3 tools/mitsuba-reference.py MESH.obj [WIDTH HEIGHT] [VARIANT]
 
-Prints one line: "mitsuba VARIANT: load S s, render S s, peak RSS MB" (load: reading the OBJ and
+Prints one line: "mitsuba VARIANT: load S s, render S s, peak RSS MiB" (load: reading the OBJ and
 building the acceleration structure, as mi.load_dict does both).
 """
 import resource
@@ -43,7 +43,7 @@ def main():
     mi.Bitmap(image).write("/tmp/mitsuba-reference.exr")
     rendered = time.perf_counter()
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    print(f"mitsuba {variant}: load {loaded - start:.3f} s, render {rendered - loaded:.3f} s, peak RSS {rss:.0f} MB")
+    print(f"mitsuba {variant}: load {loaded - start:.3f} s, render {rendered - loaded:.3f} s, peak RSS {rss:.0f} MiB")
 
 
 if __name__ == "__main__":

@@ -134,13 +134,13 @@ public final class ScaleStudyPlot {
         List<Series> memory = new ArrayList<>(List.of(
             series(medians, "ours no-cache", "peak_heap_mib", "peak heap, --no-cache (--stats)"),
             series(medians, "ours no-cache", "after_gc_mib", "largest heap after a collection, --no-cache"),
-            series(medians, "ours no-cache", "rss_mb", "peak RSS, --no-cache (MB)"),
+            series(medians, "ours no-cache", "rss_mb", "peak RSS, --no-cache"),
             series(medians, "ours cache-read", "peak_heap_mib", "peak heap, mesh cache read")));
         if (medians.containsKey("old no-cache")) {
             memory.add(series(medians, "old no-cache", "peak_heap_mib", "peak heap before issue 26"));
         }
         if (medians.containsKey("mitsuba scalar_rgb")) {
-            memory.add(series(medians, "mitsuba scalar_rgb", "rss_mb", "Mitsuba 3, peak RSS (MB)"));
+            memory.add(series(medians, "mitsuba scalar_rgb", "rss_mb", "Mitsuba 3, peak RSS"));
         }
         memory.add(guide("100 bytes per triangle", sizes, s -> 100 * s / (1 << 20)));
         memory.add(guide("64 bytes per triangle", sizes, s -> 64 * s / (1 << 20)));
@@ -148,7 +148,7 @@ public final class ScaleStudyPlot {
         int height = 640;
         BufferedImage left = new LogLogChart("Time against mesh size (median of rounds)", "triangles", "seconds", time)
             .draw(width, height);
-        BufferedImage right = new LogLogChart("Memory against mesh size", "triangles", "MiB (RSS: MB)", memory)
+        BufferedImage right = new LogLogChart("Memory against mesh size", "triangles", "MiB", memory)
             .draw(width, height);
         BufferedImage image = new BufferedImage(2 * width, height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
@@ -180,7 +180,7 @@ public final class ScaleStudyPlot {
                     configuration, m.get("rounds"), seconds(m.get("parse_s")), seconds(m.get("build_s")),
                     seconds(m.get("read_s")), seconds(m.get("render_s")), mib(m.get("peak_heap_mib")),
                     Double.isFinite(perTriangle) ? String.format(Locale.ROOT, "%.0f", perTriangle) : "",
-                    mib(m.get("after_gc_mib")), Double.isFinite(m.get("rss_mb")) ? String.format(Locale.ROOT, "%,.0f MB",
+                    mib(m.get("after_gc_mib")), Double.isFinite(m.get("rss_mb")) ? String.format(Locale.ROOT, "%,.0f MiB",
                     m.get("rss_mb")) : "", seconds(m.get("whole_s"))));
             }
         }
