@@ -319,12 +319,19 @@ final class MeshCacheFile {
         long size = Files.size(file);
         CRC32C crcC = new CRC32C();
         CRC32 crc = new CRC32();
+        // read through one small buffer, not mapped: a mapping's pages count in the process's RSS
+        // until the mapping is collected, and a mesh's source is stamped before its entry is read
+        // (a 141 MB OBJ read from the cache took 347 MiB of RSS mapped, its 66 MB PLY twin 270)
+        ByteBuffer buffer = ByteBuffer.allocateDirect(1 << 20);
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
-            // a mapping holds at most 2 GiB: larger files go in pieces
-            for (long at = 0; at < size; at += 1L << 30) {
-                ByteBuffer piece = channel.map(FileChannel.MapMode.READ_ONLY, at, Math.min(1L << 30, size - at));
-                crcC.update(piece.duplicate());
-                crc.update(piece);
+            // the first size bytes, as Files.size saw them, should the file grow meanwhile
+            for (long left = size; left > 0 && channel.read(buffer) >= 0; ) {
+                buffer.flip();
+                buffer.limit((int) Math.min(buffer.limit(), left));
+                left -= buffer.remaining();
+                crcC.update(buffer.duplicate());
+                crc.update(buffer);
+                buffer.clear();
             }
         }
         return new Stamp(path, size, crcC.getValue() << 32 | crc.getValue());
