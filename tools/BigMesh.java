@@ -23,8 +23,8 @@ import java.util.zip.GZIPInputStream;
  *
  *   java tools/BigMesh.java IN.obj[.gz] TRIANGLES OUT.obj|OUT.ply
  *
- * k is the smallest whole number giving at least TRIANGLES (the dragon's 871,414 x k^2: k = 2, 4, 6
- * give 3.5, 13.9 and 31.4 million).
+ * k is the whole number whose k^2 x 871,414 (the dragon's) comes nearest TRIANGLES, so that
+ * 4, 16 and 32 million give k = 2, 4, 6: 3.5, 13.9 and 31.4 million.
  */
 public final class BigMesh {
     public static void main(String[] args) throws IOException {
@@ -39,7 +39,7 @@ public final class BigMesh {
         int[][] t = new int[1][];
         read(in, p, t);
         int triangles = t[0].length / 3;
-        int k = (int) Math.ceil(Math.sqrt((double) target / triangles));
+        int k = (int) Math.round(Math.sqrt((double) target / triangles));
         k = Math.max(1, k);
         long made = (long) triangles * k * k;
         if (made > Integer.MAX_VALUE / 3) {

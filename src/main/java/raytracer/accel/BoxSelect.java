@@ -5,7 +5,9 @@ package raytracer.accel;
  * in the order of the report's sort: by the centroid on one axis ({@link FloatBoxes#centroidKey}),
  * ties by id, so that no two primitives are equal and the median is one primitive. Afterwards
  * position k holds the primitive a full sort would put there, with only smaller ones before it
- * and larger ones after. Boxes move with their ids, so the passes read memory in order.
+ * and larger ones after. Boxes move with their ids, so the passes read memory in order, and so
+ * does {@code carried}, three ints per primitive or null (a mesh's vertex indices, which thus
+ * reach the leaf order without a copy).
  *
  * <p>Large ranges use Floyd and Rivest's SELECT (CACM 18(3), 1975): the k-th element of a window
  * of about n^(2/3) elements around k is found first, recursively, and is nearly the k-th of the
@@ -23,16 +25,16 @@ final class BoxSelect {
     }
 
     /** Selects within positions from .. to - 1 so that position k holds its sorted element. */
-    static void nth(float[] boxes, int[] ids, int axis, int from, int to, int k) {
-        select(boxes, ids, axis, from, to - 1, k);
+    static void nth(float[] boxes, int[] ids, int[] carried, int axis, int from, int to, int k) {
+        select(boxes, ids, carried, axis, from, to - 1, k);
     }
 
     /** Sorts positions from .. to - 1 (a leaf's few primitives). */
-    static void sort(float[] boxes, int[] ids, int axis, int from, int to) {
-        insertionSort(boxes, ids, axis, from, to - 1);
+    static void sort(float[] boxes, int[] ids, int[] carried, int axis, int from, int to) {
+        insertionSort(boxes, ids, carried, axis, from, to - 1);
     }
 
-    private static void select(float[] boxes, int[] ids, int axis, int lo, int hi, int k) {
+    private static void select(float[] boxes, int[] ids, int[] carried, int axis, int lo, int hi, int k) {
         while (hi - lo >= SMALL) {
             int pivot;
             if (hi - lo > WINDOWED) {
@@ -45,25 +47,25 @@ final class BoxSelect {
                 double sd = 0.5 * Math.sqrt(z * s * (n - s) / n) * Math.signum(i - n / 2);
                 int windowLo = (int) Math.max(lo, Math.floor(k - i * s / n + sd));
                 int windowHi = (int) Math.min(hi, Math.floor(k + (n - i) * s / n + sd));
-                select(boxes, ids, axis, windowLo, windowHi, k);
+                select(boxes, ids, carried, axis, windowLo, windowHi, k);
                 pivot = k;
             } else {
                 // the median of the first, middle and last elements
                 int mid = (lo + hi) >>> 1;
                 if (before(boxes, ids, axis, mid, lo)) {
-                    swap(boxes, ids, mid, lo);
+                    swap(boxes, ids, carried, mid, lo);
                 }
                 if (before(boxes, ids, axis, hi, lo)) {
-                    swap(boxes, ids, hi, lo);
+                    swap(boxes, ids, carried, hi, lo);
                 }
                 if (before(boxes, ids, axis, hi, mid)) {
-                    swap(boxes, ids, hi, mid);
+                    swap(boxes, ids, carried, hi, mid);
                 }
                 pivot = mid;
             }
             float pivotKey = FloatBoxes.centroidKey(boxes, pivot, axis);
             int pivotId = ids[pivot];
-            int j = partition(boxes, ids, axis, lo, hi, pivotKey, pivotId);
+            int j = partition(boxes, ids, carried, axis, lo, hi, pivotKey, pivotId);
             if (k <= j) {
                 hi = j;
             } else if (k == j + 1 && ids[k] == pivotId) {
@@ -72,7 +74,7 @@ final class BoxSelect {
                 lo = j + 1;
             }
         }
-        insertionSort(boxes, ids, axis, lo, hi);
+        insertionSort(boxes, ids, carried, axis, lo, hi);
     }
 
     /**
@@ -80,7 +82,7 @@ final class BoxSelect {
      * its key and id: returns j such that no element at or before j comes after the pivot and
      * none after j comes before it; the pivot itself is at j + 1 or in one of the two parts.
      */
-    private static int partition(float[] boxes, int[] ids, int axis, int lo, int hi, float pivotKey, int pivotId) {
+    private static int partition(float[] boxes, int[] ids, int[] carried, int axis, int lo, int hi, float pivotKey, int pivotId) {
         // a method of its own, like insertionSort, so that the JIT compiles each loop early. The
         // scans need no bounds test: the pivot, or an element swapped past, stops each (a bounds
         // test that is rarely false became a trap, and JFR showed the first pass deoptimised)
@@ -94,7 +96,7 @@ final class BoxSelect {
                 j--;
             }
             if (i <= j) {
-                swap(boxes, ids, i, j);
+                swap(boxes, ids, carried, i, j);
                 i++;
                 j--;
             }
@@ -102,10 +104,10 @@ final class BoxSelect {
         return j;
     }
 
-    private static void insertionSort(float[] boxes, int[] ids, int axis, int lo, int hi) {
+    private static void insertionSort(float[] boxes, int[] ids, int[] carried, int axis, int lo, int hi) {
         for (int i = lo + 1; i <= hi; i++) {
             for (int j = i; j > lo && before(boxes, ids, axis, j, j - 1); j--) {
-                swap(boxes, ids, j, j - 1);
+                swap(boxes, ids, carried, j, j - 1);
             }
         }
     }
@@ -122,7 +124,7 @@ final class BoxSelect {
         return keyA < keyB | (keyA == keyB & idA < idB);
     }
 
-    private static void swap(float[] boxes, int[] ids, int a, int b) {
+    private static void swap(float[] boxes, int[] ids, int[] carried, int a, int b) {
         int id = ids[a];
         ids[a] = ids[b];
         ids[b] = id;
@@ -132,6 +134,13 @@ final class BoxSelect {
             float t = boxes[pa + c];
             boxes[pa + c] = boxes[pb + c];
             boxes[pb + c] = t;
+        }
+        if (carried != null) {
+            for (int c = 0; c < 3; c++) {
+                int t = carried[3 * a + c];
+                carried[3 * a + c] = carried[3 * b + c];
+                carried[3 * b + c] = t;
+            }
         }
     }
 }

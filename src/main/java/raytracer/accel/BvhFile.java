@@ -6,7 +6,8 @@ import java.nio.ByteOrder;
 /**
  * A {@link FlatBVH} in bytes, for the mesh cache: the arrays of {@link BvhNodes}, the leaf order and
  * the root, each copied in bulk (little-endian, the order of the machines this runs on, so the
- * copies are plain memory copies).
+ * copies are plain memory copies), through a {@link Sink} and back from a {@link Source}, which
+ * the mesh cache streams through a small buffer, or a ByteBuffer.
  *
  * <pre>
  *   int nodes, int primitives
@@ -14,36 +15,63 @@ import java.nio.ByteOrder;
  *   float[6] root box, int root link, int root count
  * </pre>
  *
+ * A tree without an order ({@link FlatBVH#inLeafOrder}) writes {@code -primitives} and no order.
+ *
  * <p><b>Whoever changes the layout of {@link BvhNodes} or {@link FlatBVH} (what an array holds,
  * their order, a new field) must change it here and add 1 to {@link #VERSION}</b>: a cache written
  * by another version is then rebuilt rather than misread.
  */
 public final class BvhFile {
     /** The layout above; the mesh cache keys its files by it. */
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
+
+    /** Where the bytes go: little-endian values, arrays in bulk. */
+    public interface Sink {
+        void putInt(int value);
+
+        void putInts(int[] values);
+
+        void putFloats(float[] values);
+    }
+
+    /** Where the bytes come from, as a {@link Sink} wrote them. */
+    public interface Source {
+        int getInt();
+
+        void getInts(int[] into);
+
+        void getFloats(float[] into);
+
+        /** Bytes left to read. */
+        long remaining();
+    }
 
     private BvhFile() {
     }
 
     /** The bytes {@link #write} takes for {@code bvh}. */
     public static long size(FlatBVH bvh) {
-        return 4L * (2 + bvh.nodes.bounds.length + bvh.nodes.children.length + bvh.order.length + 6 + 2);
+        int order = bvh.order == null ? 0 : bvh.order.length;
+        return 4L * (2 + bvh.nodes.bounds.length + bvh.nodes.children.length + order + 6 + 2);
     }
 
     /** Writes {@code bvh} at {@code out}'s position, which it advances; {@code out} is little-endian. */
     public static void write(FlatBVH bvh, ByteBuffer out) {
         requireLittleEndian(out);
-        out.putInt(bvh.nodes.count()).putInt(bvh.order.length);
-        out.asFloatBuffer().put(bvh.nodes.bounds);
-        out.position(out.position() + 4 * bvh.nodes.bounds.length);
-        out.asIntBuffer().put(bvh.nodes.children);
-        out.position(out.position() + 4 * bvh.nodes.children.length);
-        out.asIntBuffer().put(bvh.order);
-        out.position(out.position() + 4 * bvh.order.length);
-        for (float f : bvh.rootBox) {
-            out.putFloat(f);
+        write(bvh, sink(out));
+    }
+
+    public static void write(FlatBVH bvh, Sink out) {
+        out.putInt(bvh.nodes.count());
+        out.putInt(bvh.order == null ? -bvh.primitiveCount() : bvh.primitiveCount());
+        out.putFloats(bvh.nodes.bounds);
+        out.putInts(bvh.nodes.children);
+        if (bvh.order != null) {
+            out.putInts(bvh.order);
         }
-        out.putInt(bvh.rootLink).putInt(bvh.rootCount);
+        out.putFloats(bvh.rootBox);
+        out.putInt(bvh.rootLink);
+        out.putInt(bvh.rootCount);
     }
 
     /**
@@ -53,24 +81,29 @@ public final class BvhFile {
      */
     public static FlatBVH read(ByteBuffer in) {
         requireLittleEndian(in);
+        return read(source(in));
+    }
+
+    public static FlatBVH read(Source in) {
         int count = in.getInt();
-        int primitives = in.getInt();
-        if (count < 0 || primitives < 1 || 4L * (BvhNodes.BOUNDS_PER_NODE + BvhNodes.CHILDREN_PER_NODE) * count
-                                           + 4L * primitives > in.remaining()) {
-            throw new IllegalArgumentException("a BVH of " + count + " nodes over " + primitives + " primitives does not fit");
+        int written = in.getInt();
+        boolean inLeafOrder = written < 0;
+        int primitives = inLeafOrder ? -written : written;
+        if (count < 0 || written == 0 || written == Integer.MIN_VALUE
+            || 4L * (BvhNodes.BOUNDS_PER_NODE + BvhNodes.CHILDREN_PER_NODE) * count + (inLeafOrder ? 0 : 4L * primitives)
+               > in.remaining()) {
+            throw new IllegalArgumentException("a BVH of " + count + " nodes over " + written + " primitives does not fit");
         }
         BvhNodes nodes = new BvhNodes(count);
-        in.asFloatBuffer().get(nodes.bounds);
-        in.position(in.position() + 4 * nodes.bounds.length);
-        in.asIntBuffer().get(nodes.children);
-        in.position(in.position() + 4 * nodes.children.length);
-        int[] order = new int[primitives];
-        in.asIntBuffer().get(order);
-        in.position(in.position() + 4 * primitives);
-        float[] rootBox = new float[6];
-        for (int k = 0; k < 6; k++) {
-            rootBox[k] = in.getFloat();
+        in.getFloats(nodes.bounds);
+        in.getInts(nodes.children);
+        int[] order = null;
+        if (!inLeafOrder) {
+            order = new int[primitives];
+            in.getInts(order);
         }
+        float[] rootBox = new float[6];
+        in.getFloats(rootBox);
         int rootLink = in.getInt();
         int rootCount = in.getInt();
         checkChild(rootLink, rootCount, count, primitives);
@@ -79,7 +112,54 @@ public final class BvhFile {
                 checkChild(nodes.link(node, side), nodes.primitiveCount(node, side), count, primitives);
             }
         }
-        return new FlatBVH(nodes, order, rootBox, rootLink, rootCount);
+        return new FlatBVH(nodes, order, primitives, rootBox, rootLink, rootCount);
+    }
+
+    private static Sink sink(ByteBuffer out) {
+        return new Sink() {
+            @Override
+            public void putInt(int value) {
+                out.putInt(value);
+            }
+
+            @Override
+            public void putInts(int[] values) {
+                out.asIntBuffer().put(values);
+                out.position(out.position() + 4 * values.length);
+            }
+
+            @Override
+            public void putFloats(float[] values) {
+                out.asFloatBuffer().put(values);
+                out.position(out.position() + 4 * values.length);
+            }
+        };
+    }
+
+    private static Source source(ByteBuffer in) {
+        return new Source() {
+            @Override
+            public int getInt() {
+                return in.getInt();
+            }
+
+            @Override
+            public void getInts(int[] into) {
+                in.asIntBuffer().get(into);
+                in.position(in.position() + 4 * into.length);
+            }
+
+            @Override
+            public void getFloats(float[] into) {
+                in.asFloatBuffer().get(into);
+                in.position(in.position() + 4 * into.length);
+            }
+
+            @Override
+            public long remaining() {
+                return in.remaining();
+            }
+        };
     }
 
     /** An interior child links to a node; a leaf to a run of the leaf order. */

@@ -46,11 +46,6 @@ final class BvhNodes {
         return CHILDREN_PER_NODE * node + 2 * side;
     }
 
-    /** Sets both children's boxes from {@code boxes[at .. at + 12)}: the left box, then the right. */
-    void setBoxes(int node, float[] boxes, int at) {
-        System.arraycopy(boxes, at, bounds, boxAt(node, LEFT), BOUNDS_PER_NODE);
-    }
-
     void setBox(int node, int side, float[] box, int at) {
         System.arraycopy(box, at, bounds, boxAt(node, side), BOX);
     }

@@ -12,15 +12,21 @@ import raytracer.math.SlabRay;
  * A BVH flattened into arrays, and its traversal (report section 6): the interior nodes in the
  * layout of {@link BvhNodes}, the root apart (its box, and its link and count as a node stores a
  * child's), and the leaf order, which lists the primitives so that every leaf's are one run of it.
- * What a leaf holds and how it is tested is the business of {@link Leaves}.
+ * What a leaf holds and how it is tested is the business of {@link Leaves}. A tree over primitives
+ * already renumbered in its leaf order (a mesh's triangles, {@link #inLeafOrder}) keeps no order:
+ * it would be 0, 1, 2, ..., four bytes a triangle for nothing.
  */
 public final class FlatBVH {
     /** The deepest tree the builders may produce: the depth the traversal stacks have room for. */
     public static final int MAX_DEPTH = TraversalStack.MAX_DEPTH;
 
     final BvhNodes nodes;
-    /** Primitive ids in leaf order: a leaf (link, count) holds order[link .. link + count - 1]. */
+    /**
+     * Primitive ids in leaf order: a leaf (link, count) holds order[link .. link + count - 1]; null
+     * when the primitives are numbered in leaf order, so that the leaf holds link .. link + count - 1.
+     */
     final int[] order;
+    private final int primitives;
     final float[] rootBox;
     final int rootLink;
     final int rootCount;
@@ -35,8 +41,17 @@ public final class FlatBVH {
     }
 
     FlatBVH(BvhNodes nodes, int[] order, float[] rootBox, int rootLink, int rootCount) {
+        this(nodes, order, order.length, rootBox, rootLink, rootCount);
+    }
+
+    /** A tree whose primitives are numbered in its leaf order when {@code order} is null. */
+    FlatBVH(BvhNodes nodes, int[] order, int primitives, float[] rootBox, int rootLink, int rootCount) {
+        if (order != null && order.length != primitives) {
+            throw new IllegalArgumentException("the leaf order lists " + order.length + " of " + primitives + " primitives");
+        }
         this.nodes = nodes;
         this.order = order;
+        this.primitives = primitives;
         this.rootBox = rootBox;
         this.rootLink = rootLink;
         this.rootCount = rootCount;
@@ -87,7 +102,20 @@ public final class FlatBVH {
     }
 
     public int primitiveCount() {
-        return order.length;
+        return primitives;
+    }
+
+    /**
+     * This tree for its primitives renumbered in its leaf order ({@code Mesh.reordered(order)}):
+     * the same nodes, without the order.
+     */
+    public FlatBVH inLeafOrder() {
+        return order == null ? this : new FlatBVH(nodes, null, primitives, rootBox, rootLink, rootCount);
+    }
+
+    /** The primitive ids in leaf order (not a copy: read only); null when they are numbered so. */
+    public int[] leafOrder() {
+        return order;
     }
 
     /** Coordinate k (x0, y0, z0, x1, y1, z1) of the root's box. */

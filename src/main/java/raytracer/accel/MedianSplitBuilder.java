@@ -54,9 +54,22 @@ public final class MedianSplitBuilder {
      * outward. The array is reordered in place into the leaf order.
      */
     public FlatBVH build(float[] boxes) {
+        return build(boxes, null);
+    }
+
+    /**
+     * As {@link #build(float[])}, and {@code carried}, three ints per primitive (a mesh's vertex
+     * indices), travels with the boxes: it comes out in the leaf order, as {@code carried[3 order[k] ..]}
+     * was, with no copy of it (a permutation applied afterwards in place would follow its cycles,
+     * one dependent random read a step, some ten times as slow as a copy).
+     */
+    public FlatBVH build(float[] boxes, int[] carried) {
         int n = boxes.length / 6;
         if (n == 0) {
             throw new IllegalArgumentException("a BVH needs at least one primitive");
+        }
+        if (carried != null && carried.length != 3 * n) {
+            throw new IllegalArgumentException("need three carried ints per primitive, got " + carried.length + " for " + n);
         }
         int[] order = new int[n];
         for (int i = 0; i < n; i++) {
@@ -68,14 +81,14 @@ public final class MedianSplitBuilder {
             return new FlatBVH(new BvhNodes(0), order, rootBox, 0, n);
         }
         Map<Integer, Integer> sizes = new HashMap<>();
-        BvhNodes nodes = new BvhNodes(interiorNodes(n, sizes));
-        Job job = new Job(boxes, order, nodes, sizes, 0, 0, n, FloatBoxes.longestAxis(rootBox, 0));
+        Build build = new Build(boxes, order, carried, new BvhNodes(interiorNodes(n, sizes)), sizes);
+        Job job = new Job(build, 0, 0, n, FloatBoxes.longestAxis(rootBox, 0));
         if (n > parallelThreshold) {
             job.invoke(); // its subtrees fork into the caller's pool (the run's one pool), else the common pool
         } else {
             job.compute();
         }
-        return new FlatBVH(nodes, order, rootBox, 0, 0);
+        return new FlatBVH(build.nodes, order, rootBox, 0, 0);
     }
 
     /**
@@ -96,18 +109,24 @@ public final class MedianSplitBuilder {
         return nodes;
     }
 
+    /** One build's arrays: the primitives' boxes, ids and carried ints, which move together, and the nodes made. */
+    private record Build(float[] boxes, int[] order, int[] carried, BvhNodes nodes, Map<Integer, Integer> sizes) {
+    }
+
     /**
      * Halves positions from .. to - 1 at their median on {@code axis} and writes both children's
-     * boxes into {@code node}; returns the boxes (left, then right) so the children can pick their axes.
+     * boxes into {@code node}, where the children pick their axes from (nothing is allocated per node).
      */
-    private static float[] halve(float[] boxes, int[] order, BvhNodes nodes, int node, int from, int to, int axis) {
+    private static void halve(Build b, int node, int from, int to, int axis) {
         int mid = from + (to - from) / 2;
-        BoxSelect.nth(boxes, order, axis, from, to, mid);
-        float[] childBoxes = new float[12];
-        FloatBoxes.union(boxes, from, mid, childBoxes, 0);
-        FloatBoxes.union(boxes, mid, to, childBoxes, 6);
-        nodes.setBoxes(node, childBoxes, 0);
-        return childBoxes;
+        BoxSelect.nth(b.boxes(), b.order(), b.carried(), axis, from, to, mid);
+        FloatBoxes.union(b.boxes(), from, mid, b.nodes().bounds, BvhNodes.boxAt(node, BvhNodes.LEFT));
+        FloatBoxes.union(b.boxes(), mid, to, b.nodes().bounds, BvhNodes.boxAt(node, BvhNodes.RIGHT));
+    }
+
+    /** The longest axis of the box of {@code node}'s child on {@code side}. */
+    private static int axisOf(BvhNodes nodes, int node, int side) {
+        return FloatBoxes.longestAxis(nodes.bounds, BvhNodes.boxAt(node, side));
     }
 
     /**
@@ -115,12 +134,12 @@ public final class MedianSplitBuilder {
      * {@code node} and the nodes after it; returns the first node after the subtree. The right
      * child's number is known once the left subtree is done, so no size table is needed.
      */
-    private int buildSerial(float[] boxes, int[] order, BvhNodes nodes, int node, int from, int to, int axis) {
-        float[] childBoxes = halve(boxes, order, nodes, node, from, to, axis);
+    private int buildSerial(Build b, int node, int from, int to, int axis) {
+        halve(b, node, from, to, axis);
         int mid = from + (to - from) / 2;
         int next = node + 1;
-        next = child(boxes, order, nodes, node, BvhNodes.LEFT, next, from, mid, axis, childBoxes);
-        return child(boxes, order, nodes, node, BvhNodes.RIGHT, next, mid, to, axis, childBoxes);
+        next = child(b, node, BvhNodes.LEFT, next, from, mid, axis);
+        return child(b, node, BvhNodes.RIGHT, next, mid, to, axis);
     }
 
     /**
@@ -128,15 +147,14 @@ public final class MedianSplitBuilder {
      * primitives in order along the parent's axis as a sort would leave them, or a subtree built
      * from node {@code next} on. Returns the first node after it.
      */
-    private int child(float[] boxes, int[] order, BvhNodes nodes, int node, int side, int next, int from, int to,
-                      int parentAxis, float[] childBoxes) {
+    private int child(Build b, int node, int side, int next, int from, int to, int parentAxis) {
         if (to - from <= leafSize) {
-            BoxSelect.sort(boxes, order, parentAxis, from, to);
-            nodes.setLeaf(node, side, from, to - from);
+            BoxSelect.sort(b.boxes(), b.order(), b.carried(), parentAxis, from, to);
+            b.nodes().setLeaf(node, side, from, to - from);
             return next;
         }
-        nodes.setInterior(node, side, next);
-        return buildSerial(boxes, order, nodes, next, from, to, FloatBoxes.longestAxis(childBoxes, 6 * side));
+        b.nodes().setInterior(node, side, next);
+        return buildSerial(b, next, from, to, axisOf(b.nodes(), node, side));
     }
 
     /**
@@ -146,21 +164,14 @@ public final class MedianSplitBuilder {
      */
     private final class Job extends RecursiveAction {
         private static final long serialVersionUID = 1L;
-        private final transient float[] boxes;
-        private final transient int[] order;
-        private final transient BvhNodes nodes;
-        private final transient Map<Integer, Integer> sizes;
+        private final transient Build build;
         private final int node;
         private final int from;
         private final int to;
         private final int axis;
 
-        Job(float[] boxes, int[] order, BvhNodes nodes, Map<Integer, Integer> sizes, int node, int from, int to,
-            int axis) {
-            this.boxes = boxes;
-            this.order = order;
-            this.nodes = nodes;
-            this.sizes = sizes;
+        Job(Build build, int node, int from, int to, int axis) {
+            this.build = build;
             this.node = node;
             this.from = from;
             this.to = to;
@@ -170,18 +181,19 @@ public final class MedianSplitBuilder {
         @Override
         protected void compute() {
             if (to - from <= parallelThreshold) {
-                buildSerial(boxes, order, nodes, node, from, to, axis);
+                buildSerial(build, node, from, to, axis);
                 return;
             }
-            float[] childBoxes = halve(boxes, order, nodes, node, from, to, axis);
+            halve(build, node, from, to, axis);
             int mid = from + (to - from) / 2;
             // both halves are interior nodes here: the threshold is above twice the leaf size
             int left = node + 1;
-            int right = left + interiorNodes(mid - from, sizes);
+            int right = left + interiorNodes(mid - from, build.sizes());
+            BvhNodes nodes = build.nodes();
             nodes.setInterior(node, BvhNodes.LEFT, left);
             nodes.setInterior(node, BvhNodes.RIGHT, right);
-            invokeAll(new Job(boxes, order, nodes, sizes, left, from, mid, FloatBoxes.longestAxis(childBoxes, 0)),
-                      new Job(boxes, order, nodes, sizes, right, mid, to, FloatBoxes.longestAxis(childBoxes, 6)));
+            invokeAll(new Job(build, left, from, mid, axisOf(nodes, node, BvhNodes.LEFT)),
+                      new Job(build, right, mid, to, axisOf(nodes, node, BvhNodes.RIGHT)));
         }
     }
 }

@@ -12,6 +12,7 @@ import raytracer.math.HalfSpace;
 import raytracer.math.Ray;
 import raytracer.math.ShearedRay;
 import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.ParsedMesh;
 import raytracer.shapes.mesh.TriangleMesh;
 
 /**
@@ -23,6 +24,8 @@ import raytracer.shapes.mesh.TriangleMesh;
  * places in memory rather than from all over the mesh.
  */
 public final class MeshBVH extends GeometricObject implements Leaves, StartedSearch {
+    /** The corners of a triangle whose three vertices are the first three. */
+    private static final int[] FIRST_THREE = {0, 1, 2};
     private final TriangleMesh mesh;
     private final FlatBVH bvh;
     /** The per-face materials, as given: what hits on this mesh may be shaded with besides its own. */
@@ -85,7 +88,32 @@ public final class MeshBVH extends GeometricObject implements Leaves, StartedSea
         return b;
     }
 
+    /** As {@link #triangleBoxes(Mesh)}, for a mesh as a loader read it. */
+    public static float[] triangleBoxes(ParsedMesh mesh) {
+        float[] b = new float[6 * mesh.triangleCount()];
+        double[] corners = new double[9];
+        for (int t = 0; t < mesh.triangleCount(); t++) {
+            triangleBox(mesh, t, corners, b);
+        }
+        return b;
+    }
+
+    /** Triangle t's box, its corners gathered from the loader's blocks into {@code corners} first. */
+    private static void triangleBox(ParsedMesh mesh, int t, double[] corners, float[] b) {
+        for (int k = 0; k < 3; k++) {
+            int at = mesh.corner(t, k);
+            corners[3 * k] = mesh.position(at);
+            corners[3 * k + 1] = mesh.position(at + 1);
+            corners[3 * k + 2] = mesh.position(at + 2);
+        }
+        triangleBox(corners, FIRST_THREE, 0, b, 6 * t);
+    }
+
     private static void triangleBox(double[] p, int[] corners, int t, float[] b) {
+        triangleBox(p, corners, t, b, 6 * t);
+    }
+
+    private static void triangleBox(double[] p, int[] corners, int t, float[] b, int at) {
         // a method of its own: on a fresh JVM the JIT compiles it after a few hundred calls, where
         // a loop body waits for tens of thousands of iterations (the mesh is loaded once)
         int a = 3 * corners[3 * t];
@@ -95,8 +123,8 @@ public final class MeshBVH extends GeometricObject implements Leaves, StartedSea
             double pa = p[a + k];
             double pb = p[c1 + k];
             double pc = p[c2 + k];
-            b[6 * t + k] = FloatBoxes.roundDownLoosely(pa < pb ? (pa < pc ? pa : pc) : (pb < pc ? pb : pc));
-            b[6 * t + 3 + k] = FloatBoxes.roundUpLoosely(pa > pb ? (pa > pc ? pa : pc) : (pb > pc ? pb : pc));
+            b[at + k] = FloatBoxes.roundDownLoosely(pa < pb ? (pa < pc ? pa : pc) : (pb < pc ? pb : pc));
+            b[at + 3 + k] = FloatBoxes.roundUpLoosely(pa > pb ? (pa > pc ? pa : pc) : (pb > pc ? pb : pc));
         }
     }
 

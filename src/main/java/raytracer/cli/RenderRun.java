@@ -39,6 +39,8 @@ final class RenderRun {
     /** The frame being rendered and its file, for the window's progress and a cancel's message. */
     private volatile Renderer renderer;
     private volatile Path current;
+    /** The live heap's largest size after a collection, for --stats (null without it). */
+    private HeapAfterCollections heap;
 
     RenderRun(RenderRequest request, CommandLine commandLine) {
         this.request = request;
@@ -47,6 +49,7 @@ final class RenderRun {
     }
 
     int run() throws Exception {
+        heap = request.stats() ? HeapAfterCollections.start() : null;
         try (Workers workers = new Workers(request.threads())) {
             long readStart = System.nanoTime();
             Scene scene = workers.call(() -> Scene.open(request.scene(), request.options()));
@@ -127,7 +130,7 @@ final class RenderRun {
             report.summary(stats, out, image.filter());
         }
         if (request.stats()) {
-            report.stats(loaded.report(), loaded.world(), readNanos + loaded.loadNanos(), loaded.prepareNanos(), stats);
+            report.stats(loaded.report(), loaded.world(), readNanos + loaded.loadNanos(), loaded.prepareNanos(), stats, heap);
             report.skips(loaded.analysis(), stats, request.options().costView() ? "the bvh-cost view shows the scene as given"
                 : "--no-skip: the scene analysis was off, the scene rendered as given");
         }

@@ -92,7 +92,7 @@ final class RunReport {
     }
 
     /** The --stats breakdown: load steps and mesh figures, preparation, rays by kind, box tests, peak heap. */
-    void stats(LoadReport load, World world, long loadNanos, long prepareNanos, RenderStats s) {
+    void stats(LoadReport load, World world, long loadNanos, long prepareNanos, RenderStats s, HeapAfterCollections heap) {
         err.printf("stats: load scene %.3f s", loadNanos / 1e9);
         load.timings().forEach((step, nanos) -> err.printf(" (%s %.3f s)", step, nanos / 1e9));
         err.println();
@@ -103,8 +103,11 @@ final class RunReport {
         err.printf(", render %.3f s%n", s.seconds());
         err.printf("stats: rays %d (primary %d, shadow %d, secondary %d), %.2f M rays/s%n",
                    s.totalRays(), s.primaryRays(), s.shadowRays(), s.secondaryRays(), s.raysPerSecond() / 1e6);
-        err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB%n",
-                   s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0));
+        long afterCollections = heap.largestBytes();
+        err.printf("stats: %.1f bounding-volume tests (BVH node boxes examined) per ray, peak heap %.0f MiB (%s)%n",
+                   s.boxTestsPerRay(), peakHeapBytes() / (1024.0 * 1024.0), afterCollections < 0 ? "no collection ran"
+                   : String.format("largest after a collection %.0f MiB, %d collections", afterCollections / (1024.0 * 1024.0),
+                                   heap.collections()));
     }
 
     /**
@@ -134,7 +137,12 @@ final class RunReport {
         }
     }
 
-    /** The sum of the peak usage of the heap's memory pools since the JVM started. */
+    /**
+     * The sum of the peak usage of the heap's memory pools since the JVM started: each pool's largest
+     * use when sampled (at the start and end of every collection, and now), garbage included, so the
+     * young pool counts as much as it was allowed to fill. {@link HeapAfterCollections} gives the
+     * live side.
+     */
     static long peakHeapBytes() {
         long peak = 0;
         for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {

@@ -175,10 +175,16 @@ public final class Renderer {
                          filter.isBox() && film == null ? new Film[tiles.size()] : null, TileObjects.of(world, tiles, indices), listener);
     }
 
-    /** Renders tiles {@code indices} of the frame's list (null: all) on the workers. */
+    /**
+     * Renders tiles {@code indices} of the frame's list on the workers, or (null) all of them with
+     * the richest first ({@link TileOrder#warmUpFirst}), so that the JIT profiles the traversal on
+     * rays that enter the scene's trees. A wider filter's sums are added in the list's order
+     * whatever the order rendered, so the image does not depend on it.
+     */
     private void run(Frame frame, int[] indices) {
-        int n = indices == null ? frame.tiles().size() : indices.length;
-        workers.invoke(new TileRange(k -> renderTile(frame, indices == null ? k : indices[k]), 0, n));
+        int[] order = indices != null ? indices
+            : TileOrder.warmUpFirst(frame.tiles(), frame.tileObjects(), world.searched().size(), TILE_SIZE);
+        workers.invoke(new TileRange(k -> renderTile(frame, order[k]), 0, order.length));
     }
 
     /**

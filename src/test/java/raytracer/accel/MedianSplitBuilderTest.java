@@ -1,5 +1,6 @@
 package raytracer.accel;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static raytracer.accel.BvhAssertions.assertSameTree;
 
 import org.junit.jupiter.api.Test;
@@ -52,6 +53,26 @@ class MedianSplitBuilderTest {
         FlatBVH first = new MedianSplitBuilder(4, 0).build(boxes.clone());
         for (int i = 0; i < 3; i++) {
             assertSameTree(first, new MedianSplitBuilder(4, 0).build(boxes.clone()));
+        }
+    }
+
+    /**
+     * Issue 26: a mesh's triangle array carried through the build comes out in the leaf order, and
+     * the tree is the one built without it, serially and in parallel.
+     */
+    @Test
+    void carriedTrianglesComeOutInTheLeafOrder() {
+        Mesh sphere = Icosphere.make(5);
+        for (int threshold : new int[] {Integer.MAX_VALUE, 0, 300}) {
+            FlatBVH plain = new MedianSplitBuilder(8, threshold).build(MeshBVH.triangleBoxes(sphere));
+            int[] carried = sphere.triangles().clone();
+            FlatBVH carrying = new MedianSplitBuilder(8, threshold).build(MeshBVH.triangleBoxes(sphere), carried);
+            assertSameTree(plain, carrying);
+            int[] expected = new int[carried.length];
+            for (int k = 0; k < plain.primitiveCount(); k++) {
+                System.arraycopy(sphere.triangles(), 3 * plain.order[k], expected, 3 * k, 3);
+            }
+            assertArrayEquals(expected, carried);
         }
     }
 }

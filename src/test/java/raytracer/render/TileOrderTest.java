@@ -52,4 +52,40 @@ class TileOrderTest {
             assertEquals(4, quarters.size(), "quarters reached by the first tiles from " + from);
         }
     }
+
+    /**
+     * Issue 26: the tiles whose camera rays can meet the most objects come first in each half (the
+     * bench dragon's first tiles were floor alone, and the JIT compiled the slab and triangle tests
+     * without the camera rays' branches); with all tiles alike the order is the spread itself.
+     */
+    @Test
+    void theRichestTilesStartEveryHalfAndAnOrderOfEqualsIsTheSpread() {
+        List<int[]> tiles = TileOrder.tiles(1920, 1080);
+        int n = tiles.size();
+        int[] alike = TileOrder.warmUpFirst(tiles, null, 2, Renderer.TILE_SIZE);
+        for (int i = 0; i < n; i++) {
+            assertEquals(i, alike[i], "no objects known: the spread order");
+        }
+        // an object in the middle of the image, seen by the tiles within 300 pixels of its centre
+        raytracer.core.GeometricObject[][] seen = new raytracer.core.GeometricObject[n][];
+        raytracer.core.GeometricObject[] floor = {null};
+        raytracer.core.GeometricObject[] both = {null, null};
+        int rich = 0;
+        for (int i = 0; i < n; i++) {
+            int[] t = tiles.get(i);
+            boolean near = Math.abs(t[0] - 960) < 300 && Math.abs(t[1] - 540) < 300;
+            seen[i] = near ? both : floor;
+            rich += near ? 1 : 0;
+        }
+        int[] order = TileOrder.warmUpFirst(tiles, seen, 2, Renderer.TILE_SIZE);
+        Set<Integer> positions = new HashSet<>();
+        for (int index : order) {
+            positions.add(index);
+        }
+        assertEquals(n, positions.size(), "every tile once");
+        assertTrue(rich < n / 4, rich + " rich tiles");
+        for (int start : new int[] {0, n / 2, n / 4, 3 * n / 4}) {
+            assertEquals(2, seen[order[start]].length, "the tile starting at " + start + " sees both objects");
+        }
+    }
 }

@@ -3,6 +3,7 @@ package raytracer.io.obj;
 import java.util.Arrays;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import raytracer.shapes.mesh.Growing;
 
 /**
  * The faces of an OBJ file as corner triples (v, vt, vn) of triangles: each face's indices
@@ -26,16 +27,19 @@ final class Faces {
     private final Matcher corner = CORNER.matcher("");
     private final Matcher faceEnd = FACE_END.matcher("");
     /** Corner triples of all triangles: v always, vt and vn once any corner has them (else null). */
-    final Buffers.Ints cornerV = new Buffers.Ints();
-    Buffers.Ints cornerVt;
-    Buffers.Ints cornerVn;
+    final Growing.Ints cornerV = new Growing.Ints();
+    Growing.Ints cornerVt;
+    Growing.Ints cornerVn;
     /** The face being read: its corners' indices, and the first attribute index that does not exist, as written. */
     private final Buffers.Ints faceV = new Buffers.Ints();
     private final Buffers.Ints faceVt = new Buffers.Ints();
     private final Buffers.Ints faceVn = new Buffers.Ints();
     private String missingVt;
     private String missingVn;
-    private String line;
+    /** The text holding the line being read, and the line in it, [lineStart, lineEnd). */
+    private CharSequence text;
+    private int lineStart;
+    private int lineEnd;
     private int lineNumber;
     int faces;
     /** Faces of more than three corners. */
@@ -48,7 +52,7 @@ final class Faces {
 
     /** Triangles so far. */
     int triangles() {
-        return cornerV.size / 3;
+        return cornerV.size() / 3;
     }
 
     /** Appends {@code count} corners of triangles with positions only, 0-based and in range. */
@@ -63,10 +67,16 @@ final class Faces {
         faces += count / 3;
     }
 
-    /** The face of {@code line} whose corners follow {@code from}; returns how many triangles it made. */
-    int read(String line, int from, int lineNumber, int vertices, int uvs, int normals) throws ObjException {
-        this.line = line;
+    /** Sets the line the next face is read from: [start, end) of {@code text}, line {@code lineNumber} of the file. */
+    void at(CharSequence text, int start, int end, int lineNumber) {
+        this.text = text;
+        this.lineStart = start;
+        this.lineEnd = end;
         this.lineNumber = lineNumber;
+    }
+
+    /** The face of the line ({@link #at}) whose corners follow {@code from}; returns how many triangles it made. */
+    int read(int from, int vertices, int uvs, int normals) throws ObjException {
         faceV.size = 0;
         faceVt.size = 0;
         faceVn.size = 0;
@@ -74,7 +84,7 @@ final class Faces {
         missingVn = null;
         String badVertex = null;
         int end = from;
-        corner.reset(line).region(from, line.length());
+        corner.reset(text).region(from, lineEnd);
         while (corner.find()) {
             int v = index(corner.start(1), corner.end(1), vertices);
             if (v < 0 && badVertex == null) {
@@ -86,8 +96,8 @@ final class Faces {
             end = corner.end();
         }
         // a syntax error anywhere on the line is reported before a vertex index out of range
-        if (faceV.size == 0 || !faceEnd.reset(line).region(end, line.length()).matches()) {
-            throw error("expected " + FORMS + ", got '" + FileWarnings.shown(line, 60) + "'");
+        if (faceV.size == 0 || !faceEnd.reset(text).region(end, lineEnd).matches()) {
+            throw error("expected " + FORMS + ", got '" + FileWarnings.shown(text.subSequence(lineStart, lineEnd).toString(), 60) + "'");
         }
         int count = faceV.size;
         if (count < 3) {
@@ -97,12 +107,12 @@ final class Faces {
             throw error(badVertex);
         }
         if (present(faceVt, missingVt, "texture coordinate", uvs) && cornerVt == null) {
-            cornerVt = new Buffers.Ints();
-            cornerVt.fill(-1, cornerV.size);
+            cornerVt = new Growing.Ints();
+            cornerVt.fill(-1, cornerV.size());
         }
         if (present(faceVn, missingVn, "normal", normals) && cornerVn == null) {
-            cornerVn = new Buffers.Ints();
-            cornerVn.fill(-1, cornerV.size);
+            cornerVn = new Growing.Ints();
+            cornerVn.fill(-1, cornerV.size());
         }
         for (int i = 1; i + 1 < count; i++) {
             addCorner(0);
@@ -167,10 +177,8 @@ final class Faces {
         }
     }
 
-    /** "f a b c" with positive indices, spans of {@code line}: no corner loop, no fan. */
-    void addTriangle(String line, int lineNumber, int vertices, Matcher plain) throws ObjException {
-        this.line = line;
-        this.lineNumber = lineNumber;
+    /** "f a b c" with positive indices, spans of the line ({@link #at}): no corner loop, no fan. */
+    void addTriangle(int vertices, Matcher plain) throws ObjException {
         for (int g = 1; g <= 3; g++) {
             int v = index(plain.start(g), plain.end(g), vertices);
             if (v < 0) {
@@ -189,7 +197,7 @@ final class Faces {
 
     /** A 0-based index from a 1-based or negative (relative) OBJ index, or -1 if not in [0, count). */
     private int index(int start, int end, int count) {
-        int index = Numbers.parseInt(line, start, end);
+        int index = Numbers.parseInt(text, start, end);
         int resolved = index > 0 ? index - 1 : count + index;
         return index == 0 || resolved < 0 || resolved >= count ? -1 : resolved;
     }

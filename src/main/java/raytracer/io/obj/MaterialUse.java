@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import raytracer.shapes.mesh.Growing;
 
 /**
  * The materials of an OBJ file: what its {@code mtllib} libraries define, which one {@code usemtl}
@@ -21,7 +22,7 @@ final class MaterialUse {
     private final Map<String, Integer> index = new HashMap<>();
     private final Map<String, ObjMaterial> library = new HashMap<>();
     private final List<Path> libraries = new ArrayList<>();
-    private final Buffers.Ints ids = new Buffers.Ints();
+    private final Growing.Ints ids = new Growing.Ints();
     private int current = -1;
     private boolean used;
 

@@ -15,10 +15,11 @@ import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
 import raytracer.image.FileKind;
 import raytracer.shapes.Triangle;
-import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.Growing;
+import raytracer.shapes.mesh.ParsedMesh;
 
 /**
- * Loads a Wavefront OBJ file (optionally gzip-compressed, {@code .gz}) into one {@link Mesh}. Each
+ * Loads a Wavefront OBJ file (optionally gzip-compressed, {@code .gz}) into one {@link ParsedMesh}. Each
  * line is recognised by a precompiled pattern whose matcher is reused, and numbers are read from
  * the matched spans; chunks of plain vertex and triangle lines are parsed in parallel
  * ({@link ChunkPipeline}), everything else and every error in file order, so messages name the
@@ -43,6 +44,8 @@ public final class ObjLoader {
     static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
     static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
     private static final Pattern NAMED = Pattern.compile("\\s*(mtllib|usemtl|o|g|s)(?:\\s+(.*?))?\\s*");
+    /** The keywords read without copying them out of the line. */
+    private static final String[] KNOWN = {"v", "vt", "vn", "f", "mtllib", "usemtl", "o", "g", "s"};
     /** Statements of the OBJ specification that a mesh of triangles has no use for. */
     private static final Set<String> ACCEPTED = Set.of("l", "p", "cstype", "deg", "curv", "curv2", "surf", "parm", "end",
         "vp", "bmat", "step", "trim", "hole", "scrv", "sp", "con", "mg", "call", "csh", "maplib", "usemap", "ctech",
@@ -58,16 +61,18 @@ public final class ObjLoader {
     private final Matcher trianglePlain = TRIANGLE_PLAIN.matcher("");
     private final Matcher named = NAMED.matcher("");
 
-    private final Buffers.Doubles positions = new Buffers.Doubles();
-    private final Buffers.Floats texcoords = new Buffers.Floats();
-    private final Buffers.Floats normals = new Buffers.Floats();
+    private final Growing.Doubles positions = new Growing.Doubles();
+    private final Growing.Floats texcoords = new Growing.Floats();
+    private final Growing.Floats normals = new Growing.Floats();
     private final List<String> warnings = new ArrayList<>();
     private final FileWarnings fileWarnings;
     private final MaterialUse materials;
     private final Faces faces;
     private int lineNumber;
-    /** The line being parsed, whose spans the matchers' groups point into. */
-    private String line = "";
+    /** The text the matchers read, and the line being parsed in it, [lineStart, lineEnd). */
+    private CharSequence text = "";
+    private int lineStart;
+    private int lineEnd;
 
     private ObjLoader(Path file) {
         this.file = file;
@@ -105,7 +110,7 @@ public final class ObjLoader {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
         fileWarnings.finish();
-        Mesh mesh = MeshAssembly.build(this, smoothNormals);
+        ParsedMesh mesh = MeshAssembly.build(this, smoothNormals);
         List<ObjMaterial> used = materials.materials();
         return new ObjModel(mesh, used, List.copyOf(warnings), faces.faces, faces.ngons, materials.libraries(),
                             OpenSheets.of(mesh, used));
@@ -128,8 +133,8 @@ public final class ObjLoader {
             int at = lineNumber + 1 + text.latin1Line();
             fileWarnings.tally("latin1", at, n -> "a byte that is not UTF-8; this part of the file is read as ISO-8859-1 (Latin-1)");
         }
-        if (chunk.general || chunk.excess > positions.size / 3) {
-            parseLines(text.text());
+        if (chunk.general || chunk.excess > positions.size() / 3) {
+            parseLines(text.chars());
             return;
         }
         positions.addAll(chunk.positions, chunk.positionCount);
@@ -138,76 +143,96 @@ public final class ObjLoader {
         lineNumber += chunk.lines;
     }
 
-    /** The lines of a chunk one by one, as BufferedReader.readLine splits them. */
-    private void parseLines(String text) throws ObjException {
+    /**
+     * The lines of a chunk one by one, as BufferedReader.readLine splits them, each matched where
+     * it lies in the chunk: only a continued line is copied, to join it to the next.
+     */
+    private void parseLines(CharSequence chunk) throws ObjException {
         StringBuilder continued = null;
         int start = 0;
-        int length = text.length();
+        int length = chunk.length();
         while (start < length) {
             int end = start;
-            while (end < length && text.charAt(end) != '\n' && text.charAt(end) != '\r') {
+            while (end < length && chunk.charAt(end) != '\n' && chunk.charAt(end) != '\r') {
                 end++;
             }
-            String line = text.substring(start, end);
-            start = end < length && text.charAt(end) == '\r' && end + 1 < length && text.charAt(end + 1) == '\n'
-                    ? end + 2 : end + 1;
+            int next = end < length && chunk.charAt(end) == '\r' && end + 1 < length && chunk.charAt(end + 1) == '\n'
+                       ? end + 2 : end + 1;
             lineNumber++;
             // a trailing backslash joins the next line to this one
-            if (line.endsWith("\\")) {
-                continued = (continued == null ? new StringBuilder() : continued).append(line, 0, line.length() - 1).append(' ');
-                continue;
-            }
-            if (continued != null) {
-                line = continued.append(line).toString();
+            if (end > start && chunk.charAt(end - 1) == '\\') {
+                continued = (continued == null ? new StringBuilder() : continued).append(chunk, start, end - 1).append(' ');
+            } else if (continued != null) {
+                String line = continued.append(chunk, start, end).toString();
                 continued = null;
+                parseLine(line, 0, line.length());
+            } else {
+                parseLine(chunk, start, end);
             }
-            parseLine(line);
+            start = next;
         }
         if (continued != null) {
             // a backslash on the file's last line continues into nothing: the line ends there
-            parseLine(continued.toString());
+            String line = continued.toString();
+            parseLine(line, 0, line.length());
         }
     }
 
-    private void parseLine(String text) throws ObjException {
-        line = text;
-        if (vertexPlain.reset(text).matches()) {
+    /** {@code m} set to match the line being parsed. */
+    private Matcher onLine(Matcher m) {
+        return m.reset(text).region(lineStart, lineEnd);
+    }
+
+    /** The line being parsed, as a String: for messages. */
+    private String line() {
+        return text.subSequence(lineStart, lineEnd).toString();
+    }
+
+    private void parseLine(CharSequence chars, int start, int end) throws ObjException {
+        text = chars;
+        lineStart = start;
+        lineEnd = end;
+        if (onLine(vertexPlain).matches()) {
             for (int g = 1; g <= 3; g++) {
                 positions.add(coordinate(vertexPlain, g));
             }
             return;
         }
-        if (trianglePlain.reset(text).matches()) {
-            faces.addTriangle(text, lineNumber, positions.size / 3, trianglePlain);
+        if (onLine(trianglePlain).matches()) {
+            faces.at(text, start, end, lineNumber);
+            faces.addTriangle(positions.size() / 3, trianglePlain);
             materials.addTriangles(1);
             return;
         }
-        if (!keyword.reset(text).lookingAt()) {
+        if (!onLine(keyword).lookingAt()) {
             return; // blank or comment
         }
-        String key = keyword.group(1);
+        String key = keyword(keyword.start(1), keyword.end(1));
         switch (key) {
             case "v" -> {
-                require(vertex.reset(text).matches(), "'v x y z' with three numbers");
+                require(onLine(vertex).matches(), "'v x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
                     positions.add(coordinate(vertex, g));
                 }
             }
             case "vt" -> {
-                require(texcoord.reset(text).matches(), "'vt u [v [w]]' with numbers");
+                require(onLine(texcoord).matches(), "'vt u [v [w]]' with numbers");
                 texcoords.add(floatValue(texcoord, 1, "texture coordinate"));
                 texcoords.add(texcoord.start(2) >= 0 ? floatValue(texcoord, 2, "texture coordinate") : 0f);
             }
             case "vn" -> {
-                require(normal.reset(text).matches(), "'vn x y z' with three numbers");
+                require(onLine(normal).matches(), "'vn x y z' with three numbers");
                 for (int g = 1; g <= 3; g++) {
                     normals.add(floatValue(normal, g, "normal component"));
                 }
             }
-            case "f" -> materials.addTriangles(faces.read(text, keyword.end(), lineNumber, positions.size / 3,
-                                                          texcoords.size / 2, normals.size / 3));
+            case "f" -> {
+                faces.at(text, start, end, lineNumber);
+                materials.addTriangles(faces.read(keyword.end(), positions.size() / 3, texcoords.size() / 2,
+                                                  normals.size() / 3));
+            }
             case "mtllib", "usemtl", "o", "g", "s" -> {
-                named.reset(text).matches();
+                onLine(named).matches();
                 String argument = Arguments.withoutComment(named.group(2) == null ? "" : named.group(2));
                 if (key.equals("mtllib")) {
                     materials.loadLibraries(argument, lineNumber);
@@ -223,10 +248,29 @@ public final class ObjLoader {
         }
     }
 
+    /** The keyword at [start, end) of the line: one of {@link #KNOWN} without a copy, else a new String. */
+    private String keyword(int start, int end) {
+        for (String known : KNOWN) {
+            if (known.length() == end - start && spanIs(known, start)) {
+                return known;
+            }
+        }
+        return text.subSequence(start, end).toString();
+    }
+
+    private boolean spanIs(String word, int start) {
+        for (int i = 0; i < word.length(); i++) {
+            if (text.charAt(start + i) != word.charAt(i)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private double finite(Matcher m, int group) throws ObjException {
-        char last = line.charAt(m.end(group) - 1);
+        char last = text.charAt(m.end(group) - 1);
         // 'nan', 'inf' and 'infinity' end in a letter other than an exponent's digits
-        double v = Character.isLetter(last) ? Double.NaN : Numbers.parseDouble(line, m.start(group), m.end(group));
+        double v = Character.isLetter(last) ? Double.NaN : Numbers.parseDouble(text, m.start(group), m.end(group));
         if (!Double.isFinite(v)) {
             throw error("coordinate '" + m.group(group) + "' is not a finite number");
         }
@@ -255,7 +299,7 @@ public final class ObjLoader {
 
     private void require(boolean matched, String expected) throws ObjException {
         if (!matched) {
-            throw error("expected " + expected + ", got '" + FileWarnings.shown(line, 60) + "'");
+            throw error("expected " + expected + ", got '" + FileWarnings.shown(line(), 60) + "'");
         }
     }
 
@@ -264,27 +308,27 @@ public final class ObjLoader {
     }
 
     // ---- read by MeshAssembly ----
-    Buffers.Doubles positions() {
+    Growing.Doubles positions() {
         return positions;
     }
 
-    Buffers.Floats texcoords() {
+    Growing.Floats texcoords() {
         return texcoords;
     }
 
-    Buffers.Floats normals() {
+    Growing.Floats normals() {
         return normals;
     }
 
-    Buffers.Ints cornerV() {
+    Growing.Ints cornerV() {
         return faces.cornerV;
     }
 
-    Buffers.Ints cornerVt() {
+    Growing.Ints cornerVt() {
         return faces.cornerVt;
     }
 
-    Buffers.Ints cornerVn() {
+    Growing.Ints cornerVn() {
         return faces.cornerVn;
     }
 

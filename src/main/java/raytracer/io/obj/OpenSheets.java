@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.ParsedMesh;
 
 /**
  * Which see-through material groups of a mesh are open sheets (a window pane, a glass quad) rather
@@ -22,7 +22,7 @@ final class OpenSheets {
     }
 
     /** The material ids (indices into {@code materials}) of the see-through groups of {@code mesh} that are open. */
-    static Set<Integer> of(Mesh mesh, List<ObjMaterial> materials) {
+    static Set<Integer> of(ParsedMesh mesh, List<ObjMaterial> materials) {
         Set<Integer> open = new TreeSet<>();
         int[] ids = mesh.materialIds();
         for (int id = 0; id < materials.size(); id++) {
@@ -34,7 +34,7 @@ final class OpenSheets {
     }
 
     /** Whether some edge of the triangles of material {@code id} (all of them when {@code ids} is null) is used once. */
-    private static boolean hasBoundaryEdge(Mesh mesh, int[] ids, int id) {
+    private static boolean hasBoundaryEdge(ParsedMesh mesh, int[] ids, int id) {
         Map<Corner, Integer> welded = new HashMap<>();
         Map<Long, Integer> uses = new HashMap<>();
         int[] corner = new int[3];
@@ -57,10 +57,9 @@ final class OpenSheets {
     }
 
     /** The number of the first corner seen at the position at {@code offset} into the mesh's positions. */
-    private static int weld(Mesh mesh, int offset, Map<Corner, Integer> welded) {
-        double[] p = mesh.positions();
+    private static int weld(ParsedMesh mesh, int offset, Map<Corner, Integer> welded) {
         // + 0.0 makes -0.0 the same position as 0.0
-        Corner key = new Corner(p[offset] + 0.0, p[offset + 1] + 0.0, p[offset + 2] + 0.0);
+        Corner key = new Corner(mesh.position(offset) + 0.0, mesh.position(offset + 1) + 0.0, mesh.position(offset + 2) + 0.0);
         return welded.computeIfAbsent(key, k -> welded.size());
     }
 

@@ -8,11 +8,20 @@ import raytracer.shapes.Triangle;
  * positive indices (besides blanks and comments): the whole of a scanned mesh. It needs no state
  * from the lines before it, so chunks are parsed in parallel and appended in order. Any other line
  * makes the chunk {@link #general}: it is then parsed line by line in order, as is every error, so
- * messages and relative indices come out as from a serial read.
+ * messages and relative indices come out as from a serial read. A parse writes into a
+ * {@link Scratch} that the pipeline hands from chunk to chunk, so that parsing a file allocates
+ * nothing per chunk once the first few are in flight.
  */
 final class PlainChunk {
     /** The chunk's result when a line needs the general parser. */
     static final PlainChunk GENERAL = new PlainChunk(true, null, 0, null, 0, 0, 0);
+
+    /** The arrays a parse writes into, reused by the next chunk once this one is merged. */
+    static final class Scratch {
+        // a chunk of a scanned mesh is about 1/3 vertices and 2/3 triangles, of some 25 to 40 bytes a line
+        final Buffers.Doubles positions = new Buffers.Doubles(LineChunks.CHUNK / 32);
+        final Buffers.Ints corners = new Buffers.Ints(LineChunks.CHUNK / 16);
+    }
 
     /** True when a line needs the general parser. */
     final boolean general;
@@ -40,16 +49,17 @@ final class PlainChunk {
         this.excess = excess;
     }
 
-    static PlainChunk parse(String text) {
+    /** The plain parse of {@code text} into {@code scratch} (whose values it replaces), or {@link #GENERAL}. */
+    static PlainChunk parse(CharSequence text, Scratch scratch) {
         try {
-            return parsePlain(text);
+            return parsePlain(text, scratch);
         } catch (RuntimeException e) {
             return GENERAL; // whatever the fast path cannot take, the line-by-line parse reports at its line
         }
     }
 
-    private static PlainChunk parsePlain(String text) {
-        Parser parser = new Parser(text);
+    private static PlainChunk parsePlain(CharSequence text, Scratch scratch) {
+        Parser parser = new Parser(text, scratch);
         int lines = 0;
         int start = 0;
         int length = text.length();
@@ -76,8 +86,8 @@ final class PlainChunk {
                               parser.corners.size, lines, parser.excess);
     }
 
-    private static int indexOrLength(String text, char c, int from) {
-        int i = text.indexOf(c, from);
+    static int indexOrLength(CharSequence text, char c, int from) {
+        int i = text instanceof ByteChars bytes ? bytes.indexOf(c, from) : ((String) text).indexOf(c, from);
         return i < 0 ? text.length() : i;
     }
 
@@ -86,22 +96,23 @@ final class PlainChunk {
      * before it replaces a loop running inside one call (one 2x slower parse, cold, in one method).
      */
     private static final class Parser {
-        private final String text;
+        private final CharSequence text;
         private final Matcher vertex;
         private final Matcher triangle;
         private final Matcher keyword;
-        // a chunk of a scanned mesh is about 1/3 vertices and 2/3 triangles, of some 25 bytes a line
         final Buffers.Doubles positions;
         final Buffers.Ints corners;
         int excess = Integer.MIN_VALUE;
 
-        Parser(String text) {
+        Parser(CharSequence text, Scratch scratch) {
             this.text = text;
             vertex = ObjLoader.VERTEX_PLAIN.matcher(text);
             triangle = ObjLoader.TRIANGLE_PLAIN.matcher(text);
             keyword = ObjLoader.KEYWORD.matcher(text);
-            positions = new Buffers.Doubles(text.length() / 16);
-            corners = new Buffers.Ints(text.length() / 8);
+            positions = scratch.positions;
+            corners = scratch.corners;
+            positions.size = 0;
+            corners.size = 0;
         }
 
         /** Parses the line [start, end); false when it needs the general parser. */

@@ -15,11 +15,12 @@ import java.util.Set;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
 import raytracer.shapes.Triangle;
-import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.Growing;
+import raytracer.shapes.mesh.ParsedMesh;
 import raytracer.shapes.mesh.SmoothNormals;
 
 /**
- * Loads a PLY file (optionally gzip-compressed, {@code .ply.gz}) into one {@link Mesh}: the
+ * Loads a PLY file (optionally gzip-compressed, {@code .ply.gz}) into one {@link ParsedMesh}: the
  * {@code vertex} element's x, y, z, its normals nx, ny, nz and texture coordinates (u, v; s, t;
  * texture_u, texture_v) when all of a set are there, and the {@code face} element's vertex_indices
  * (or vertex_index) lists, fan-triangulated. Other properties (colours, a scanner's confidence) and
@@ -39,7 +40,7 @@ public final class PlyLoader {
     private final Set<String> skipped = new LinkedHashSet<>();
 
     private long vertices = -1;
-    private double[] positions;
+    private Growing.Doubles positions;
     private float[] normals;
     private float[] uvs;
     private int[] triangles = new int[0];
@@ -94,7 +95,7 @@ public final class PlyLoader {
         }
         int[] t = Arrays.copyOf(triangles, corners);
         float[] n = normals != null ? normals : smoothNormals ? SmoothNormals.angleWeighted(positions, t) : null;
-        return new PlyModel(new Mesh(positions, n, uvs, t, null), List.copyOf(warnings), faces, ngons);
+        return new PlyModel(new ParsedMesh(positions, n, uvs, t, null), List.copyOf(warnings), faces, ngons);
     }
 
     private void readVertices(PlyHeader.Element e, PlyInput in) throws IOException, PlyException {
@@ -140,14 +141,13 @@ public final class PlyLoader {
         }
         int count = (int) e.count();
         int capacity = Math.min(count, FIRST_CAPACITY);
-        double[] p = new double[3 * capacity];
+        Growing.Doubles p = new Growing.Doubles();
         float[] n = hasNormals ? new float[3 * capacity] : null;
         float[] t = hasUvs ? new float[2 * capacity] : null;
         double[] values = new double[8];
         for (int i = 0; i < count; i++) {
             if (i == capacity) {
                 capacity = (int) Math.min(count, 2L * capacity);
-                p = Arrays.copyOf(p, 3 * capacity);
                 n = n != null ? Arrays.copyOf(n, 3 * capacity) : null;
                 t = t != null ? Arrays.copyOf(t, 2 * capacity) : null;
             }
@@ -177,9 +177,9 @@ public final class PlyLoader {
                                            + Triangle.MAX_COORDINATE + " in size, more than a triangle holds");
                 }
             }
-            p[3 * i] = values[0];
-            p[3 * i + 1] = values[1];
-            p[3 * i + 2] = values[2];
+            p.add(values[0]);
+            p.add(values[1]);
+            p.add(values[2]);
             if (n != null) {
                 n[3 * i] = (float) values[3];
                 n[3 * i + 1] = (float) values[4];

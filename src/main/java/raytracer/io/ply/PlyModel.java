@@ -2,7 +2,12 @@ package raytracer.io.ply;
 
 import java.util.List;
 import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.ParsedMesh;
 
-/** What a PLY file holds: one mesh, the warnings of its load, its faces as written and how many had more than three corners. */
-public record PlyModel(Mesh mesh, List<String> warnings, int faces, int ngons) {
+/** What a PLY file holds: one mesh ({@code parsed}, in the file's order; {@link #mesh} a flat copy), warnings, faces as written and how many had more than three corners. */
+public record PlyModel(ParsedMesh parsed, List<String> warnings, int faces, int ngons) {
+    /** The mesh in file order, its positions copied flat. */
+    public Mesh mesh() {
+        return parsed.mesh();
+    }
 }

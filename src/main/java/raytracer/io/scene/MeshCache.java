@@ -170,6 +170,8 @@ public final class MeshCache {
                 return new Lookup(this, obj, file, options, stamp, contents, null);
             }
             warn.accept("mesh cache " + file + " is stale (" + stale + "); " + obj.getFileName() + " is parsed again");
+        } catch (MeshCacheFile.OtherVersion e) {
+            // left by an older or newer program: rewritten below, as an entry never written would be
         } catch (IOException e) {
             warn.accept("mesh cache " + file + " is unusable (" + IoReason.of(e) + "); " + obj.getFileName()
                         + " is parsed again");
@@ -340,7 +342,7 @@ public final class MeshCache {
         }
 
         /**
-         * Writes the entry for {@code model} as built into {@code mesh} and {@code bvh}, then keeps
+         * Writes the entry for {@code model} (its figures; its mesh may be gone) as built into {@code mesh} and {@code bvh}, then keeps
          * the cache under its cap; a small mesh, a model that warned, an entry larger than the cap
          * or a folder that cannot be written is not cached (the last with a warning).
          */
@@ -366,9 +368,8 @@ public final class MeshCache {
                     libraries.add(MeshCacheFile.stamp(library, folder.relativize(library.toAbsolutePath().normalize()).toString()));
                 }
                 MeshCacheFile.Header h = new MeshCacheFile.Header(source, options, libraries, model.faces(), model.ngons(),
-                    model.mesh().vertexCount(), model.mesh().triangleCount(), model.mesh().hasNormals(),
-                    model.mesh().hasUvs(), model.mesh().materialIds() != null, model.mesh().bounds(), model.materials(),
-                    model.sheets());
+                    mesh.vertexCount(), mesh.triangleCount(), mesh.hasNormals(), mesh.hasUvs(), mesh.materialIds() != null,
+                    mesh.bounds(), model.materials(), model.sheets());
                 cache.createDir();
                 MeshCacheFile.write(file, h, mesh, bvh, folder);
             } catch (IOException e) {

@@ -1,6 +1,7 @@
 package raytracer.io.scene;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.BufferUnderflowException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
@@ -28,7 +29,7 @@ import raytracer.shapes.mesh.Mesh;
  *   long magic "RTMESH", int {@link #VERSION}, int {@link BvhFile#VERSION}, long file length
  *   int header length, header ({@link Header}, written by {@link MeshCacheHeader})
  *   double[3 v] positions, float[3 v] normals?, float[2 v] uvs?, int[3 t] triangles, int[t] material ids?
- *   the BVH ({@link BvhFile}), each array starting on a multiple of 8
+ *   the BVH ({@link BvhFile}, in the mesh's order: no leaf order), each array starting on a multiple of 8
  *   int CRC-32C of every byte before it
  * </pre>
  *
@@ -40,7 +41,7 @@ final class MeshCacheFile {
      * The layout above and what the OBJ reader and {@link MeshReader} make of a file: add 1 when
      * either changes, so that files written before are rebuilt rather than trusted.
      */
-    static final int VERSION = 4;
+    static final int VERSION = 5;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
@@ -75,108 +76,157 @@ final class MeshCacheFile {
     }
 
     /**
-     * Writes the file atomically (temporary file and rename); texture paths are written relative
-     * to {@code folder}, the OBJ file's.
+     * Writes the file atomically (temporary file and rename), streamed through a small buffer;
+     * texture paths are written relative to {@code folder}, the OBJ file's.
      */
     static void write(Path file, Header header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
         byte[] head = MeshCacheHeader.encode(header, folder);
         long length = align(PREAMBLE + head.length) + arrays(mesh) + align(BvhFile.size(bvh)) + 4;
-        if (length > Integer.MAX_VALUE - 8) {
-            throw new IOException("the mesh is too large to cache (" + length + " bytes)");
-        }
-        ByteBuffer out = ByteBuffer.allocate((int) length).order(ByteOrder.LITTLE_ENDIAN);
-        out.putLong(MAGIC).putInt(VERSION).putInt(BvhFile.VERSION).putLong(length).putInt(head.length).put(head);
-        pad(out);
-        out.asDoubleBuffer().put(mesh.positions());
-        out.position(out.position() + 8 * mesh.positions().length);
-        putFloats(out, mesh.normals());
-        putFloats(out, mesh.uvs());
-        putInts(out, mesh.triangles());
-        putInts(out, mesh.materialIds());
-        BvhFile.write(bvh, out);
-        pad(out);
-        CRC32C crc = new CRC32C();
-        crc.update(out.array(), 0, out.position());
-        out.putInt((int) crc.getValue());
-        AtomicFile.replace(file, stream -> stream.write(out.array(), 0, out.position()));
+        AtomicFile.replace(file, stream -> {
+            ChecksummedOutput out = new ChecksummedOutput(stream);
+            try {
+                out.putLong(MAGIC);
+                out.putInt(VERSION);
+                out.putInt(BvhFile.VERSION);
+                out.putLong(length);
+                out.putInt(head.length);
+                out.putBytes(head);
+                out.pad();
+                out.putDoubles(mesh.positions());
+                putFloats(out, mesh.normals());
+                putFloats(out, mesh.uvs());
+                putInts(out, mesh.triangles());
+                putInts(out, mesh.materialIds());
+                BvhFile.write(bvh, out);
+                out.pad();
+                if (out.position() != length - 4) {
+                    throw new IllegalStateException("wrote " + out.position() + " bytes where " + (length - 4) + " were due");
+                }
+                out.finish();
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
+        });
     }
 
     /**
-     * The whole file, read once (one open, one read: an entry replaced meanwhile cannot mix two
-     * versions) and checked before any of it is used: its length and checksum first, then the
-     * header's counts against the arrays, the bounds against the vertices, every value finite,
-     * every index and material id in range, the tree's links. An IOException says why the file is
-     * not one this program can use.
+     * The whole file, read once (one open, one pass: an entry replaced meanwhile cannot mix two
+     * versions) straight into the mesh's and the tree's arrays, and checked before any of it is
+     * used: its length first, its checksum over every byte, then the header's counts against the
+     * arrays, the bounds against the vertices, every value finite, every index and material id in
+     * range, the tree's links. The arrays are filled as the bytes arrive (the header's counts are
+     * read first, provisionally, to size them); if the header cannot be read or its counts do not
+     * fit, the rest is only counted into the checksum. An IOException says why the file is not one
+     * this program can use.
      */
     static Contents read(Path file, Path folder) throws IOException {
-        ByteBuffer in;
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             long size = channel.size();
-            if (size < PREAMBLE + 4 || size > Integer.MAX_VALUE - 8) {
+            if (size < PREAMBLE + 4) {
                 throw new IOException("it has " + size + " bytes");
             }
-            in = ByteBuffer.allocateDirect((int) size).order(ByteOrder.LITTLE_ENDIAN);
-            readFully(channel, in);
-            if (channel.read(ByteBuffer.allocate(1)) > 0) {
-                throw new IOException("it grew while it was read");
+            ChecksummedInput in = new ChecksummedInput(channel, size - 4);
+            Parts parts = null;
+            Exception failed = null;
+            try {
+                // the preamble only chooses the message of a file refused anyway: another format, cut short
+                int headerLength = checkPreamble(in, size);
+                byte[] head = new byte[headerLength];
+                in.getBytes(head);
+                in.align();
+                try {
+                    parts = new Parts(MeshCacheHeader.decode(head, folder));
+                    parts.read(in, size);
+                } catch (IOException | RuntimeException e) {
+                    failed = e;
+                }
+                in.skip(in.remaining()); // the checksum covers every byte
+                ByteBuffer stored = ByteBuffer.allocate(4).order(ByteOrder.LITTLE_ENDIAN);
+                while (stored.hasRemaining() && channel.read(stored, size - 4 + stored.position()) > 0) {
+                    // the last four bytes
+                }
+                if (stored.hasRemaining() || in.checksum() != stored.getInt(0)) {
+                    throw new IOException("its checksum does not match its contents");
+                }
+                if (channel.size() != size) {
+                    throw new IOException("it " + (channel.size() > size ? "grew" : "shrank") + " while it was read");
+                }
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            } catch (BufferUnderflowException e) {
+                throw new IOException("it ends early", e);
             }
-        }
-        int size = in.limit();
-        // the preamble only chooses the message of a file refused anyway: another format, cut short
-        checkPreamble(in, size);
-        CRC32C crc = new CRC32C();
-        crc.update(in.duplicate().position(0).limit(size - 4));
-        if ((int) crc.getValue() != in.getInt(size - 4)) {
-            throw new IOException("its checksum does not match its contents");
-        }
-        try {
-            return decode(in, size, folder);
-        } catch (IllegalArgumentException | IndexOutOfBoundsException | BufferUnderflowException e) {
-            throw new IOException("its contents are inconsistent (" + e.getMessage() + ")", e);
+            if (failed instanceof IOException e) {
+                throw e;
+            }
+            if (failed != null) {
+                throw new IOException("its contents are inconsistent (" + failed.getMessage() + ")", failed);
+            }
+            try {
+                return parts.check();
+            } catch (IllegalArgumentException | IndexOutOfBoundsException e) {
+                throw new IOException("its contents are inconsistent (" + e.getMessage() + ")", e);
+            }
         }
     }
 
-    /** The header and arrays of a file whose checksum matched, each checked against the others. */
-    private static Contents decode(ByteBuffer in, int size, Path folder) throws IOException {
-        int headerLength = checkPreamble(in, size);
-        byte[] head = new byte[headerLength];
-        in.get(head);
-        Header header = MeshCacheHeader.decode(head, folder);
-        if (24L * header.vertices() + 12L * header.triangles() > size) {
-            throw new IOException("its header counts more vertices and triangles than it holds");
+    /** An entry's parts as read, before {@link #check}: the header, then the arrays it counts. */
+    private static final class Parts {
+        final Header header;
+        double[] positions;
+        float[] normals;
+        float[] uvs;
+        int[] triangles;
+        int[] ids;
+        FlatBVH bvh;
+
+        Parts(Header header) {
+            this.header = header;
         }
-        in.position(align(in.position()));
-        double[] positions = new double[3 * header.vertices()];
-        in.asDoubleBuffer().get(positions);
-        in.position(in.position() + 8 * positions.length);
-        float[] normals = header.normals() ? getFloats(in, 3 * header.vertices()) : null;
-        float[] uvs = header.uvs() ? getFloats(in, 2 * header.vertices()) : null;
-        int[] triangles = getInts(in, 3 * header.triangles());
-        int[] ids = header.materialIds() ? getInts(in, header.triangles()) : null;
-        FlatBVH bvh = BvhFile.read(in);
-        in.position(align(in.position()));
-        if (in.position() != size - 4) {
-            throw new IOException("it holds " + (size - 4 - in.position()) + " bytes more than its header counts");
-        }
-        requireFinite(positions, "vertex");
-        requireFinite(normals, "normal");
-        requireFinite(uvs, "texture coordinate");
-        Mesh mesh = new Mesh(positions, normals, uvs, triangles, ids);
-        if (!mesh.bounds().equals(header.bounds())) {
-            throw new IOException("its header's bounds " + header.bounds() + " are not its vertices' " + mesh.bounds());
-        }
-        if (ids != null) {
-            int materials = Math.max(1, header.materials().size());
-            for (int id : ids) {
-                if (id < 0 || id >= materials) {
-                    throw new IOException("a triangle has material id " + id + " of " + materials);
-                }
+
+        /** Reads the arrays the header counts, sized from it once they are known to fit the file. */
+        void read(ChecksummedInput in, long size) throws IOException {
+            if (24L * header.vertices() + 12L * header.triangles() > size) {
+                throw new IOException("its header counts more vertices and triangles than it holds");
+            }
+            positions = new double[3 * header.vertices()];
+            in.getDoubles(positions);
+            normals = header.normals() ? getFloats(in, 3 * header.vertices()) : null;
+            uvs = header.uvs() ? getFloats(in, 2 * header.vertices()) : null;
+            triangles = getInts(in, 3 * header.triangles());
+            ids = header.materialIds() ? getInts(in, header.triangles()) : null;
+            bvh = BvhFile.read(in);
+            in.align();
+            if (in.remaining() != 0) {
+                throw new IOException("it holds " + in.remaining() + " bytes more than its header counts");
             }
         }
-        if (bvh.primitiveCount() != header.triangles()) {
-            throw new IOException("its tree holds " + bvh.primitiveCount() + " triangles of " + header.triangles());
+
+        /** The parts checked against each other, as a whole entry. */
+        Contents check() throws IOException {
+            requireFinite(positions, "vertex");
+            requireFinite(normals, "normal");
+            requireFinite(uvs, "texture coordinate");
+            Mesh mesh = new Mesh(positions, normals, uvs, triangles, ids);
+            if (!mesh.bounds().equals(header.bounds())) {
+                throw new IOException("its header's bounds " + header.bounds() + " are not its vertices' " + mesh.bounds());
+            }
+            if (ids != null) {
+                int materials = Math.max(1, header.materials().size());
+                for (int id : ids) {
+                    if (id < 0 || id >= materials) {
+                        throw new IOException("a triangle has material id " + id + " of " + materials);
+                    }
+                }
+            }
+            if (bvh.primitiveCount() != header.triangles()) {
+                throw new IOException("its tree holds " + bvh.primitiveCount() + " triangles of " + header.triangles());
+            }
+            if (bvh.leafOrder() != null) {
+                throw new IOException("its tree is not in the mesh's order");
+            }
+            return new Contents(header, mesh, bvh);
         }
-        return new Contents(header, mesh, bvh);
     }
 
     /** Vertex coordinates: finite and within what a triangle holds ({@link Triangle#MAX_COORDINATE}), as the OBJ reader requires. */
@@ -198,16 +248,25 @@ final class MeshCacheFile {
         }
     }
 
-    /** Checks magic, versions and length; returns the header's length, with the buffer just past the preamble. */
-    private static int checkPreamble(ByteBuffer in, long fileSize) throws IOException {
-        in.position(0);
+    /**
+     * An entry of another format or BVH version: what every entry becomes when the program is
+     * upgraded, so it is replaced without a warning (a damaged entry is warned of).
+     */
+    static final class OtherVersion extends IOException {
+        OtherVersion(String message) {
+            super(message);
+        }
+    }
+
+    /** Checks magic, versions and length; returns the header's length, with the input just past the preamble. */
+    private static int checkPreamble(ChecksummedInput in, long fileSize) throws IOException {
         if (in.getLong() != MAGIC) {
             throw new IOException("it is not a mesh cache file");
         }
         int version = in.getInt();
         int bvhVersion = in.getInt();
         if (version != VERSION || bvhVersion != BvhFile.VERSION) {
-            throw new IOException("it was written by another version (format " + version + ", BVH " + bvhVersion
+            throw new OtherVersion("it was written by another version (format " + version + ", BVH " + bvhVersion
                                   + "; this program reads format " + VERSION + ", BVH " + BvhFile.VERSION + ")");
         }
         long length = in.getLong();
@@ -229,38 +288,32 @@ final class MeshCacheFile {
         return bytes + (mesh.materialIds() == null ? 0 : align(4L * mesh.materialIds().length));
     }
 
-    private static void putFloats(ByteBuffer out, float[] values) {
+    private static void putFloats(ChecksummedOutput out, float[] values) {
         if (values != null) {
-            out.asFloatBuffer().put(values);
-            out.position(out.position() + 4 * values.length);
-            pad(out);
+            out.putFloats(values);
+            out.pad();
         }
     }
 
-    private static void putInts(ByteBuffer out, int[] values) {
+    private static void putInts(ChecksummedOutput out, int[] values) {
         if (values != null) {
-            out.asIntBuffer().put(values);
-            out.position(out.position() + 4 * values.length);
-            pad(out);
+            out.putInts(values);
+            out.pad();
         }
     }
 
-    private static float[] getFloats(ByteBuffer in, int n) {
+    private static float[] getFloats(ChecksummedInput in, int n) {
         float[] values = new float[n];
-        in.asFloatBuffer().get(values);
-        in.position(align(in.position() + 4 * n));
+        in.getFloats(values);
+        in.align();
         return values;
     }
 
-    private static int[] getInts(ByteBuffer in, int n) {
+    private static int[] getInts(ChecksummedInput in, int n) {
         int[] values = new int[n];
-        in.asIntBuffer().get(values);
-        in.position(align(in.position() + 4 * n));
+        in.getInts(values);
+        in.align();
         return values;
-    }
-
-    private static void pad(ByteBuffer out) {
-        out.position(align(out.position()));
     }
 
     private static int align(int position) {
@@ -271,26 +324,24 @@ final class MeshCacheFile {
         return (bytes + 7) & ~7L;
     }
 
-    private static void readFully(FileChannel channel, ByteBuffer buffer) throws IOException {
-        while (buffer.hasRemaining()) {
-            if (channel.read(buffer) < 0) {
-                throw new IOException("it ends early (it shrank while it was read)");
-            }
-        }
-        buffer.flip();
-    }
-
     /** The content stamp of a file now, recorded under {@code path}. */
     static Stamp stamp(Path file, String path) throws IOException {
         long size = Files.size(file);
         CRC32C crcC = new CRC32C();
         CRC32 crc = new CRC32();
+        // read through one small buffer, not mapped: a mapping's pages count in the process's RSS
+        // until the mapping is collected, and a mesh's source is stamped before its entry is read
+        // (a 141 MB OBJ read from the cache took 347 MiB of RSS mapped, its 66 MB PLY twin 270)
+        ByteBuffer buffer = ByteBuffer.allocateDirect(1 << 20);
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
-            // a mapping holds at most 2 GiB: larger files go in pieces
-            for (long at = 0; at < size; at += 1L << 30) {
-                ByteBuffer piece = channel.map(FileChannel.MapMode.READ_ONLY, at, Math.min(1L << 30, size - at));
-                crcC.update(piece.duplicate());
-                crc.update(piece);
+            // the first size bytes, as Files.size saw them, should the file grow meanwhile
+            for (long left = size; left > 0 && channel.read(buffer) >= 0; ) {
+                buffer.flip();
+                buffer.limit((int) Math.min(buffer.limit(), left));
+                left -= buffer.remaining();
+                crcC.update(buffer.duplicate());
+                crc.update(buffer);
+                buffer.clear();
             }
         }
         return new Stamp(path, size, crcC.getValue() << 32 | crc.getValue());

@@ -130,7 +130,7 @@ final class MeshReader {
         long parseNanos = System.nanoTime() - start;
         report.recordTiming("parse " + name, parseNanos);
         model.warnings().forEach(report::addWarning);
-        report.addStatistic(statistic(name, model.mesh().triangleCount(), model.mesh().vertexCount(), model.ngons(),
+        report.addStatistic(statistic(name, model.parsed().triangleCount(), model.parsed().vertexCount(), model.ngons(),
                                       model.faces()));
         model.libraries().forEach(report::addInput);
         List<Path> inputs = new ArrayList<>(List.of(file));
@@ -190,7 +190,7 @@ final class MeshReader {
         try {
             if (isPly(file)) {
                 PlyModel ply = PlyLoader.load(file, smooth);
-                return new ObjModel(ply.mesh(), List.of(), ply.warnings(), ply.faces(), ply.ngons(), List.of(), Set.of());
+                return new ObjModel(ply.parsed(), List.of(), ply.warnings(), ply.faces(), ply.ngons(), List.of(), Set.of());
             }
             return ObjLoader.load(file, smooth);
         } catch (ObjException | PlyException e) {

@@ -12,6 +12,7 @@ import raytracer.io.obj.ObjMaterial;
 import raytracer.io.obj.ObjModel;
 import raytracer.math.BBox;
 import raytracer.shapes.mesh.Mesh;
+import raytracer.shapes.mesh.ParsedMesh;
 
 /**
  * One OBJ file with one set of options (smoothing, builder), as every mesh object of a scene that
@@ -51,7 +52,7 @@ final class SharedMesh {
         this.model = model;
         this.parseNanos = parseNanos;
         this.readNanos = 0;
-        this.bounds = model.mesh().bounds();
+        this.bounds = model.parsed().bounds();
         this.materials = model.materials();
         this.sheets = model.sheets();
     }
@@ -108,6 +109,23 @@ final class SharedMesh {
         return MeshBVH.inLeafOrder(mesh, bvh, objectMaterials);
     }
 
+    /**
+     * The tree over the parsed mesh, and the mesh in its leaf order: the median builder carries the
+     * parse's own triangle array into that order; the SAH's order is applied to a copy.
+     */
+    private void buildTree(ParsedMesh parsed) {
+        FlatBVH tree;
+        if (builder.equals("median")) {
+            tree = new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(parsed), parsed.triangles());
+            mesh = parsed.afterTrianglesMoved(tree.leafOrder());
+        } else {
+            Mesh flat = parsed.mesh();
+            tree = new SahBuilder(MeshReader.SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(flat));
+            mesh = flat.reordered(tree.leafOrder());
+        }
+        bvh = tree.inLeafOrder();
+    }
+
     private void take(LoadReport report) {
         long start = System.nanoTime();
         mesh = contents.mesh();
@@ -118,14 +136,15 @@ final class SharedMesh {
         report.addStatistic(String.format("mesh %s: read from the mesh cache in %.3f s (%s)", name, took / 1e9, lookup.file()));
     }
 
-    /** Builds the tree over the parse (the time includes the triangles' boxes and renumbering them in leaf order), then caches both. */
+    /**
+     * Builds the tree over the parse and puts the mesh in the tree's leaf order (the time includes
+     * the triangles' boxes and the renumbering), then caches both.
+     */
     private void build(LoadReport report) {
         long start = System.nanoTime();
-        bvh = builder.equals("median")
-            ? new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(model.mesh()))
-            : new SahBuilder(MeshReader.SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(model.mesh()));
-        // renumbered in the tree's leaf order once, for every object that shares it
-        mesh = new MeshBVH(model.mesh(), bvh, List.of()).mesh();
+        buildTree(model.parsed());
+        // the parse in file order is let go now: the cache entry is written from the leaf order
+        model = model.withoutMesh();
         long built = System.nanoTime() - start;
         report.recordPrepareTiming(builder + " BVH of " + name + " (" + bvh.nodeCount() + " nodes)", built);
         String cached = "";
@@ -144,6 +163,6 @@ final class SharedMesh {
         }
         report.addStatistic(String.format("mesh %s: parsed in %.3f s, %s BVH built in %.3f s%s", name, parseNanos / 1e9,
                                           builder, built / 1e9, cached));
-        model = null; // the parse in file order is no longer needed: only the leaf order is kept
+        model = null;
     }
 }

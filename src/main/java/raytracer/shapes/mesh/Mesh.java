@@ -7,7 +7,8 @@ import raytracer.math.BBox;
  * Indexed triangle data in flat arrays. Every corner of a triangle is one vertex index into
  * {@code positions} (x, y, z per vertex) and, when present, {@code normals} (x, y, z per vertex) and
  * {@code uvs} (u, v per vertex). {@code materialIds} gives each triangle an index into a material
- * list kept by whoever made the mesh, or is null when all share one material.
+ * list kept by whoever made the mesh, or is null when all share one material. The loaders make
+ * a {@link ParsedMesh} first, which becomes a mesh in its BVH's leaf order.
  */
 public final class Mesh {
     private final double[] positions;

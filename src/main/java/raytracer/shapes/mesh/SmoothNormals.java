@@ -10,12 +10,20 @@ public final class SmoothNormals {
     }
 
     /** One unit normal per vertex of the positions {@code p} (x, y, z each), for the triangles' vertex indices. */
-    public static float[] angleWeighted(double[] p, int[] triangles) {
-        double[] sum = new double[p.length];
+    public static float[] angleWeighted(Growing.Doubles positions, int[] triangles) {
+        // the corners of a triangle, three at a time: a flat copy of the positions would be the
+        // mesh's size again, its blocks read through an index are not much slower
+        double[] p = new double[9];
+        double[] sum = new double[positions.size()];
         for (int t = 0; t < triangles.length; t += 3) {
-            int a = 3 * triangles[t];
-            int b = 3 * triangles[t + 1];
-            int c = 3 * triangles[t + 2];
+            for (int k = 0; k < 3; k++) {
+                for (int d = 0; d < 3; d++) {
+                    p[3 * k + d] = positions.get(3 * triangles[t + k] + d);
+                }
+            }
+            int a = 0;
+            int b = 3;
+            int c = 6;
             double[] n = cross(p, a, b, c);
             double len = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             if (!(len > 0)) {
@@ -24,13 +32,14 @@ public final class SmoothNormals {
             int[] corners = {a, b, c};
             for (int k = 0; k < 3; k++) {
                 double angle = angle(p, corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
+                int vertex = 3 * triangles[t + k];
                 for (int d = 0; d < 3; d++) {
-                    sum[corners[k] + d] += angle * n[d] / len;
+                    sum[vertex + d] += angle * n[d] / len;
                 }
             }
         }
-        float[] normals = new float[p.length];
-        for (int i = 0; i < p.length; i += 3) {
+        float[] normals = new float[sum.length];
+        for (int i = 0; i < sum.length; i += 3) {
             double len = Math.sqrt(sum[i] * sum[i] + sum[i + 1] * sum[i + 1] + sum[i + 2] * sum[i + 2]);
             if (len > 0) {
                 for (int d = 0; d < 3; d++) {
