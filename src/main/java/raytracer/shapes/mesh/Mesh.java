@@ -18,14 +18,28 @@ public final class Mesh {
     private final int[] materialIds;
 
     public Mesh(double[] positions, float[] normals, float[] uvs, int[] triangles, int[] materialIds) {
-        if (positions.length % 3 != 0 || triangles.length % 3 != 0) {
+        checkArrays(positions.length, normals, uvs, triangles, materialIds);
+        this.positions = positions;
+        this.normals = normals;
+        this.uvs = uvs;
+        this.triangles = triangles;
+        this.materialIds = materialIds;
+    }
+
+    /**
+     * Checks that the arrays of a mesh of {@code positionCount} coordinates fit together: threes, one
+     * normal and (u, v) per vertex, one material id per triangle, every index a vertex. Returns the
+     * number of vertices.
+     */
+    static int checkArrays(long positionCount, float[] normals, float[] uvs, int[] triangles, int[] materialIds) {
+        if (positionCount % 3 != 0 || triangles.length % 3 != 0) {
             throw new IllegalArgumentException("positions and triangles come in threes");
         }
-        int vertices = positions.length / 3;
-        if (normals != null && normals.length != 3 * vertices) {
+        int vertices = Math.toIntExact(positionCount / 3);
+        if (normals != null && normals.length != 3L * vertices) {
             throw new IllegalArgumentException("need one normal per vertex");
         }
-        if (uvs != null && uvs.length != 2 * vertices) {
+        if (uvs != null && uvs.length != 2L * vertices) {
             throw new IllegalArgumentException("need one (u, v) per vertex");
         }
         if (materialIds != null && materialIds.length != triangles.length / 3) {
@@ -36,11 +50,7 @@ public final class Mesh {
                 throw new IllegalArgumentException("vertex index " + index + " out of range 0.." + (vertices - 1));
             }
         }
-        this.positions = positions;
-        this.normals = normals;
-        this.uvs = uvs;
-        this.triangles = triangles;
-        this.materialIds = materialIds;
+        return vertices;
     }
 
     public int vertexCount() {

@@ -21,24 +21,7 @@ public final class ParsedMesh {
 
     /** Takes over {@code positions} (x, y, z per vertex); the rest as {@link Mesh#Mesh} takes it. */
     public ParsedMesh(Growing.Doubles positions, float[] normals, float[] uvs, int[] triangles, int[] materialIds) {
-        if (positions.size() % 3 != 0 || triangles.length % 3 != 0) {
-            throw new IllegalArgumentException("positions and triangles come in threes");
-        }
-        vertices = positions.size() / 3;
-        if (normals != null && normals.length != 3 * vertices) {
-            throw new IllegalArgumentException("need one normal per vertex");
-        }
-        if (uvs != null && uvs.length != 2 * vertices) {
-            throw new IllegalArgumentException("need one (u, v) per vertex");
-        }
-        if (materialIds != null && materialIds.length != triangles.length / 3) {
-            throw new IllegalArgumentException("need one material id per triangle");
-        }
-        for (int index : triangles) {
-            if (index < 0 || index >= vertices) {
-                throw new IllegalArgumentException("vertex index " + index + " out of range 0.." + (vertices - 1));
-            }
-        }
+        vertices = Mesh.checkArrays(positions.size(), normals, uvs, triangles, materialIds);
         this.positions = positions;
         this.normals = normals;
         this.uvs = uvs;
