@@ -107,7 +107,12 @@ final class ShowCapture {
         return null;
     }
 
-    /** The screen's pixels in {@code r} once two reads 100 ms apart agree (the last repaint has reached the server). */
+    /**
+     * The screen's pixels in {@code r} once two reads 100 ms apart agree (the last repaint has reached
+     * the server) and show more than one colour: on a loaded machine a window can be mapped, and
+     * titled done, before its picture is first painted, and two reads of the bare background agree.
+     * None of the tests' images is one flat colour; after 5 s the last read is returned as it is.
+     */
     private static BufferedImage steadyCapture(Robot robot, Rectangle r) throws InterruptedException {
         robot.waitForIdle();
         BufferedImage before = robot.createScreenCapture(r);
@@ -115,12 +120,22 @@ final class ShowCapture {
             Thread.sleep(100);
             robot.waitForIdle();
             BufferedImage now = robot.createScreenCapture(r);
-            if (Arrays.equals(pixels(before), pixels(now))) {
+            int[] shown = pixels(now);
+            if (Arrays.equals(pixels(before), shown) && !flat(shown)) {
                 return now;
             }
             before = now;
         }
         return before;
+    }
+
+    private static boolean flat(int[] rgb) {
+        for (int p : rgb) {
+            if (p != rgb[0]) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static int[] pixels(BufferedImage image) {
