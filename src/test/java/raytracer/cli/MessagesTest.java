@@ -38,7 +38,7 @@ class MessagesTest {
     }
 
     /** One line, exit code {@code code}, starting with the file, its line and column ({@code where} their start). */
-    private void oneLineAt(Result r, int code, String where, String fragment) {
+    private void assertOneLineAt(Result r, int code, String where, String fragment) {
         assertEquals(code, r.code(), r.err());
         assertEquals(1, r.lines().length, r.err());
         assertTrue(r.err().startsWith("render: error: " + dir.resolve("s.yaml") + ":" + where), r.err());
@@ -49,26 +49,26 @@ class MessagesTest {
     @Test
     void anOverflowingTransformSaysSoWithItsLine() throws IOException {
         Result r = render(scene("objects:\n  - {type: sphere, center: [0, 0, 0],\n     transform: [{scale: 1e200}]}\n"));
-        oneLineAt(r, 1, "3:17", "the transform overflows");
+        assertOneLineAt(r, 1, "3:17", "the transform overflows");
     }
 
     @Test
     void anImpossibleImageSizeNamesItsLine() throws IOException {
         Result r = render(scene("image: {width: 100000, height: 100000}\nobjects:\n" + OBJECT));
-        oneLineAt(r, 1, "1:16", "100000 x 100000 pixels");
+        assertOneLineAt(r, 1, "1:16", "100000 x 100000 pixels");
     }
 
     @Test
     void yamlLimitsNameTheirLine() throws IOException {
         Result r = render(scene("image: {width: 4, height: 4}\nobjects: " + "[".repeat(60) + "]".repeat(60) + "\n"));
-        oneLineAt(r, 1, "2:", "nested deeper than");
+        assertOneLineAt(r, 1, "2:", "nested deeper than");
         StringBuilder laughs = new StringBuilder("image: {width: 4, height: 4}\na: &a [x, x]\n");
         for (int i = 1; i < 60; i++) {
             laughs.append("a").append(i).append(": &a").append(i).append(" [*a").append(i == 1 ? "" : i - 1).append(", *a")
                   .append(i == 1 ? "" : i - 1).append("]\n");
         }
         r = render(scene(laughs + "objects:\n" + OBJECT));
-        oneLineAt(r, 1, "", "aliases");
+        assertOneLineAt(r, 1, "", "aliases");
     }
 
     @Test

@@ -60,7 +60,7 @@ class SampleCountLimitTest {
         assertTrue(r.err().contains("--reference-spp must be 1 to " + 2 * Sampler.MAX_SAMPLES), r.err());
     }
 
-    private void refused(String text, String fragment) throws IOException {
+    private void assertRefused(String text, String fragment) throws IOException {
         Path scene = Files.writeString(dir.resolve("s.yaml"), text);
         SceneException e = assertThrows(SceneException.class, () -> SceneLoader.load(scene));
         assertTrue(e.getMessage().contains(fragment), e.getMessage());
@@ -70,9 +70,9 @@ class SampleCountLimitTest {
     @Test
     void theSceneFileBoundsEveryCount() throws IOException {
         String most = "must be at most " + Sampler.MAX_SAMPLES + ", got 2147483647";
-        refused(SCENE.replace("samples: 1}\nlights", "samples: 2147483647}\nlights"), "'samples' in image " + most);
-        refused(SCENE.replace("samples: 1}\nobjects", "samples: 2147483647}\nobjects"), "'samples' in rectangle light " + most);
-        refused(SCENE.replace("objects:", "materials:\n  g: {type: glossy, samples: 2147483647}\nobjects:"),
+        assertRefused(SCENE.replace("samples: 1}\nlights", "samples: 2147483647}\nlights"), "'samples' in image " + most);
+        assertRefused(SCENE.replace("samples: 1}\nobjects", "samples: 2147483647}\nobjects"), "'samples' in rectangle light " + most);
+        assertRefused(SCENE.replace("objects:", "materials:\n  g: {type: glossy, samples: 2147483647}\nobjects:"),
                 "'samples' in glossy material 'g' " + most);
     }
 }

@@ -11,6 +11,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import raytracer.core.World;
+import raytracer.lights.Ambient;
+import raytracer.math.RGBColor;
 
 /**
  * What a light emits (its scale times its colour) must fit the image's float channels: 1e308 x 1e308
@@ -38,9 +41,14 @@ class EmissionLimitTest {
 
     @Test
     void emissionUpToTheLimitLoads() throws SceneException {
-        SceneLoader.load("s.yaml", "ambient: {radiance: 1e38, color: [3.4, 0, 1]}\n"
+        World world = SceneLoader.load("s.yaml", "ambient: {radiance: 1e38, color: [3.4, 0, 1]}\n"
             + "lights: [{type: point, position: [0, 5, 0], intensity: 3.4e38}, {type: point, position: [0, 5, 0], intensity: 1e300, color: [1e-262, 0, 0]}]\n"
-            + OBJECTS);
+            + OBJECTS).world();
+        // both lights kept, and the products as given: the check refuses, it never clamps
+        assertEquals(2, world.lightList().size());
+        RGBColor ambient = ((Ambient) world.ambient()).radiance();
+        assertEquals(3.4e38, ambient.r(), 3.4e38 * 1e-15);
+        assertEquals(1e38, ambient.b(), 1e38 * 1e-15);
     }
 
     @Test

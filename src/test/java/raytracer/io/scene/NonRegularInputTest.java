@@ -33,7 +33,7 @@ class NonRegularInputTest {
     }
 
     /** Loads (and prepares) the scene, which must fail at once naming the file as not a regular file. */
-    private void refused(Path scene, MeshCache cache, String file) {
+    private void assertRefused(Path scene, MeshCache cache, String file) {
         SceneException e = assertTimeoutPreemptively(Duration.ofSeconds(20), () -> assertThrows(SceneException.class, () -> {
             SceneLoader.load(scene, cache).world().prepare();
         }));
@@ -45,10 +45,10 @@ class NonRegularInputTest {
     void aMeshThatIsAFifoIsRefusedAtOnceWithOrWithoutTheCache() throws Exception {
         fifo("m.obj");
         Path scene = scene("  - {type: mesh, file: m.obj}\n", "");
-        refused(scene, null, "m.obj");
-        refused(scene, MeshCache.in(dir.resolve("cache")), "m.obj");
+        assertRefused(scene, null, "m.obj");
+        assertRefused(scene, MeshCache.in(dir.resolve("cache")), "m.obj");
         Files.createDirectory(dir.resolve("d.obj"));
-        refused(scene("  - {type: mesh, file: d.obj}\n", ""), null, "d.obj");
+        assertRefused(scene("  - {type: mesh, file: d.obj}\n", ""), null, "d.obj");
     }
 
     @Test
@@ -65,9 +65,9 @@ class NonRegularInputTest {
     void imagesThatAreFifosAreRefused() throws Exception {
         fifo("wood.png");
         fifo("sky.hdr");
-        refused(scene("  - {type: sphere, center: [0, 0, 0], material: wood}\n",
+        assertRefused(scene("  - {type: sphere, center: [0, 0, 0], material: wood}\n",
                       "materials:\n  wood: {type: matte, texture: {type: image, file: wood.png}}\n"), null, "wood.png");
         Files.writeString(dir.resolve("s.yaml"), "environment: {file: sky.hdr}\nobjects:\n  - {type: sphere, center: [0, 0, 0]}\n");
-        refused(dir.resolve("s.yaml"), null, "sky.hdr");
+        assertRefused(dir.resolve("s.yaml"), null, "sky.hdr");
     }
 }
