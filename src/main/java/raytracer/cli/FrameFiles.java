@@ -18,8 +18,8 @@ import java.util.regex.Pattern;
  * names its frames alike.
  */
 public final class FrameFiles {
-    /** One printf integer conversion, with an optional zero flag and width. */
-    private static final Pattern FRAME = Pattern.compile("%(0?[1-9]?)d");
+    /** One printf integer conversion, with an optional width, zero-padded or not (a zero flag needs a width: %0d throws). */
+    private static final Pattern FRAME = Pattern.compile("%(0?[1-9])?d");
     /** The last 12 bytes of every PNG: the IEND chunk, empty, with its CRC. */
     private static final byte[] PNG_END = {0, 0, 0, 0, 'I', 'E', 'N', 'D', (byte) 0xAE, 0x42, 0x60, (byte) 0x82};
     private static final byte[] PNG_START = {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};

@@ -13,9 +13,10 @@ import raytracer.image.ImageWriters;
  * Where an output goes: the image's default name, and whether a file can be written, known before
  * rendering. Nothing the user named is destroyed: an output that is one of the run's inputs is
  * refused, a symbolic link is written through to its target, a FIFO or character device is
- * written into ({@link raytracer.image.AtomicFile#write}).
+ * written into ({@link raytracer.image.AtomicFile#write}). The Spark job checks its local outputs
+ * here too.
  */
-final class OutputFile {
+public final class OutputFile {
     private OutputFile() {
     }
 
@@ -30,7 +31,7 @@ final class OutputFile {
     }
 
     /** Why the image could not be written to {@code out}, or null if it can be. */
-    static String whyUnwritable(Path out) {
+    public static String whyUnwritable(Path out) {
         String extensions = String.join(", ", ImageWriters.EXTENSIONS);
         if (Files.isDirectory(out)) {
             return "it is a directory; give a file name ending in one of " + extensions;
@@ -84,7 +85,7 @@ final class OutputFile {
      * one of the files the scene read ({@code inputs}: meshes, material libraries, images), or
      * {@code otherInputs} (the reference). The same file under another name (a link) counts.
      */
-    static String whyInput(Path out, Path scene, Collection<Path> inputs, Path... otherInputs) {
+    public static String whyInput(Path out, Path scene, Collection<Path> inputs, Path... otherInputs) {
         if (scene != null && same(out, scene)) {
             return "it is the scene";
         }

@@ -118,11 +118,17 @@ public final class Renderer {
         PixelFilter filter = vp.filter();
         FilteredImage.check(filter);
         List<int[]> tiles = TileOrder.tiles(vp.hres(), vp.vres());
+        boolean[] given = new boolean[tiles.size()];
         for (int index : indices) {
             if (index < 0 || index >= tiles.size()) {
                 throw new IllegalArgumentException("tile " + index + " is not one of the " + tiles.size() + " tiles of a "
                                                    + vp.hres() + "x" + vp.vres() + " image");
             }
+            if (given[index]) {
+                // two workers would render it into one tile's arrays at once
+                throw new IllegalArgumentException("tile " + index + " is given twice");
+            }
+            given[index] = true;
         }
         long start = System.nanoTime();
         Frame frame = frame(tiles, null, indices, null);

@@ -53,6 +53,10 @@ final class FrameTask implements Function<int[], byte[]> {
                 tiles[i] = task[1] + i;
             }
             SceneFrame prepared = ExecutorScenes.prepared(job, frame, workers, sceneNanos);
+            String input = Outputs.whyInput(job.output(frame), prepared.report().inputs());
+            if (input != null) {
+                return TaskResult.failed(frame, input, yamlSource());
+            }
             failIfHooked(context, null);
             RenderedTiles rendered = prepared.renderer(workers).renderTiles(tiles);
             return TaskResult.tiles(frame, rendered.tiles(), rendered.stats(), sceneNanos[0], System.nanoTime() - start, yamlSource());
@@ -71,6 +75,10 @@ final class FrameTask implements Function<int[], byte[]> {
     private byte[] whole(int frame, Workers workers, TaskContext context, long[] sceneNanos, long start) throws Exception {
         Scene scene = ExecutorScenes.scene(job, sceneNanos);
         SceneFrame loaded = scene.load(frame, workers);
+        String input = Outputs.whyInput(job.output(frame), loaded.report().inputs());
+        if (input != null) {
+            return TaskResult.failed(frame, input, yamlSource());
+        }
         loaded.prepare(workers);
         ImageSettings image = loaded.image();
         Film film = new Film(image.width(), image.height());

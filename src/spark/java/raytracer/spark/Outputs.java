@@ -101,6 +101,25 @@ final class Outputs {
     /** Makes the folder of {@code target}. */
     static void makeFolder(String target, Configuration conf) throws IOException {
         Path file = new Path(target);
-        fileSystem(file, conf).mkdirs(file.getParent());
+        if (!fileSystem(file, conf).mkdirs(file.getParent())) {
+            throw new IOException("cannot make the folder " + file.getParent());
+        }
+    }
+
+    /** The local file {@code target} names (a plain path or {@code file:}), or null on any other file system. */
+    static java.nio.file.Path localFile(String target) {
+        java.net.URI uri = new Path(target).toUri();
+        return uri.getScheme() == null ? java.nio.file.Path.of(target)
+            : "file".equals(uri.getScheme()) ? java.nio.file.Path.of(uri) : null;
+    }
+
+    /**
+     * Why {@code target} must not be written because the frame read it (a texture, a mesh named as
+     * the output: the rule of {@code render}, {@link raytracer.cli.OutputFile#whyInput}), or null.
+     */
+    static String whyInput(String target, java.util.Collection<java.nio.file.Path> inputs) {
+        java.nio.file.Path local = localFile(target);
+        String why = local == null ? null : raytracer.cli.OutputFile.whyInput(local, null, inputs);
+        return why == null ? null : "cannot write " + target + ": " + why;
     }
 }

@@ -2,6 +2,7 @@ package raytracer.spark;
 
 import java.io.PrintWriter;
 import java.net.URL;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,6 +11,7 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import java.util.jar.JarFile;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
@@ -26,6 +28,7 @@ import raytracer.api.Scene;
 import raytracer.api.SceneOptions;
 import raytracer.cli.FrameFiles;
 import raytracer.cli.FrameRange;
+import raytracer.cli.OutputFile;
 import raytracer.cli.SceneFlags;
 import raytracer.cli.Terminal;
 import raytracer.image.Film;
@@ -35,6 +38,7 @@ import raytracer.io.scene.SceneFile;
 import raytracer.render.Renderer;
 import raytracer.render.TileImage;
 import raytracer.render.TilePixels;
+import raytracer.render.Workers;
 
 /**
  * {@code spark-submit --class raytracer.spark.SparkRender --jars render.jar render-spark.jar SCENE
@@ -109,8 +113,13 @@ public final class SparkRender implements Callable<Integer> {
     public static void main(String[] args) throws Exception {
         URL ours = location(raytracer.io.scene.SceneLoader.class);
         URL yaml = location(org.yaml.snakeyaml.LoaderOptions.class);
-        boolean oursHoldsYaml = ours != null && ours.getPath().endsWith(".jar")
-                                && new java.util.jar.JarFile(ours.getPath()).getEntry("org/yaml/snakeyaml/LoaderOptions.class") != null;
+        boolean oursHoldsYaml = false;
+        if (ours != null && ours.getPath().endsWith(".jar")) {
+            // from the URI, not the URL's path: that is percent-encoded (a space in a folder's name)
+            try (JarFile jar = new JarFile(Path.of(ours.toURI()).toFile())) {
+                oursHoldsYaml = jar.getEntry("org/yaml/snakeyaml/LoaderOptions.class") != null;
+            }
+        }
         if (oursHoldsYaml && !ours.equals(yaml) && !(SparkRender.class.getClassLoader() instanceof OursFirst)) {
             try (OursFirst loader = new OursFirst(new URL[] {location(SparkRender.class), ours}, SparkRender.class.getClassLoader())) {
                 Thread.currentThread().setContextClassLoader(loader);
@@ -174,8 +183,11 @@ public final class SparkRender implements Callable<Integer> {
                 throw new ParameterException(commandLine, e.getMessage());
             }
         }
-        if (tasks != null && tasks < 1 || threads != null && threads < 1) {
-            throw new ParameterException(commandLine, (tasks != null && tasks < 1 ? "--tasks" : "--threads") + " must be at least 1");
+        if (tasks != null && tasks < 1) {
+            throw new ParameterException(commandLine, "--tasks must be at least 1");
+        }
+        if (threads != null && (threads < 1 || threads > Workers.MAX_THREADS)) {
+            throw new ParameterException(commandLine, "--threads must be 1 to " + Workers.MAX_THREADS + ", got " + threads);
         }
         String out = output != null ? output : defaultOutput(range != null);
         if (range != null && FrameFiles.whyNotPattern(out) != null) {
@@ -184,6 +196,19 @@ public final class SparkRender implements Callable<Integer> {
         if (!ImageWriters.isSupported(range != null ? FrameFiles.format(out, 0) : out)) {
             throw new ParameterException(commandLine, "cannot write " + out + ": unsupported extension (use one of "
                                                       + String.join(", ", ImageWriters.EXTENSIONS) + ")");
+        }
+        // render's rules for a local output, known before any work: never the scene, and writable
+        // (its folder may be missing: it is made); the files the scene reads are checked by the tasks
+        Path local = Outputs.localFile(range != null ? FrameFiles.format(out, range.first()) : out);
+        if (local != null) {
+            Path folder = local.toAbsolutePath().getParent();
+            String why = OutputFile.whyInput(local, scene, List.of());
+            if (why == null && folder != null && Files.isDirectory(folder)) {
+                why = OutputFile.whyUnwritable(local);
+            }
+            if (why != null) {
+                throw new ParameterException(commandLine, "cannot write " + out + ": " + why);
+            }
         }
         // the driver reads the text and the image settings only: no mesh is read here
         String text = scene == null ? Scene.defaultSceneText() : SceneFile.readText(scene);

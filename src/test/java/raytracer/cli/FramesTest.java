@@ -122,6 +122,9 @@ class FramesTest {
         assertTrue(FrameFiles.whyNotPattern("frame.png").contains("it has 0"));
         assertTrue(FrameFiles.whyNotPattern("%d-%d.png").contains("it has 2"));
         assertTrue(FrameFiles.whyNotPattern("%s.png").contains("a % in it must be"));
+        // a zero flag without a width is no conversion String.format can do
+        assertTrue(FrameFiles.whyNotPattern("f-%0d.png").contains("a % in it must be"));
+        assertNull(FrameFiles.whyNotPattern("f-%5d.png"));
         assertEquals("scene-%04d.png", FrameFiles.defaultPattern(Path.of("dir/scene.yaml")));
         assertEquals(Path.of("f-0012.png"), FrameFiles.name("f-%04d.png", 12));
         assertEquals(new FrameRange(3, 3), FrameRange.parse("3"));

@@ -88,6 +88,8 @@ class RenderTilesTest {
             tiles = new Renderer(world, RayTreeSettings.FULL_TREE, workers, 1).renderTiles(new int[] {0, 1, 2, 3, 4, 5}).tiles();
             assertThrows(IllegalArgumentException.class, () -> new Renderer(world, RayTreeSettings.FULL_TREE, workers, 1)
                 .renderTiles(new int[] {6}), "a 70x40 image has 6 tiles");
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> new Renderer(world, RayTreeSettings.FULL_TREE, workers, 1)
+                .renderTiles(new int[] {2, 3, 2})).getMessage().contains("tile 2 is given twice"));
         }
         Film film = new Film(70, 40);
         List<TilePixels> missing = List.of(tiles).subList(0, 5);

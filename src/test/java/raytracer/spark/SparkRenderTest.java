@@ -22,6 +22,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import raytracer.cli.RenderCommand;
+import raytracer.image.Film;
+import raytracer.image.ImageWriters;
 
 /**
  * The render on Spark, in local mode with two cores (a task may fail once and be retried), against
@@ -152,6 +154,37 @@ class SparkRenderTest {
                       "the scene has no animation section");
         assertOneLine(spark("scenes/default.yaml", "-o", dir.resolve("x.jpg").toString()), 2, "unsupported extension");
         assertOneLine(spark("scenes/default.yaml", "--spp", "0"), 2, "--spp must be 1 to");
+    }
+
+    /**
+     * render's rules for outputs hold for the job: an output that is a texture the scene reads is
+     * refused by the task that finds it (the driver reads no more than the image settings) and the
+     * texture is left as it was; a folder as the output and a thread count past the limit are
+     * refused before any task.
+     */
+    @Test
+    void anOutputIsNeverAnInputAndIsCheckedFirst() throws IOException {
+        Path texture = dir.resolve("wood.png");
+        Film film = new Film(2, 2);
+        film.set(0, 0, 1, 0, 0);
+        ImageWriters.write(film, 1, texture);
+        byte[] before = Files.readAllBytes(texture);
+        Path scene = Files.writeString(dir.resolve("t.yaml"), """
+            image: {width: 16, height: 12, samples: 1}
+            materials:
+              wood: {type: matte, texture: {type: image, file: wood.png}}
+            objects:
+              - {type: sphere, center: [0, 0, 0], radius: 1, material: wood}
+            lights:
+              - {type: point, position: [0, 5, 5]}
+            """);
+        assertOneLine(spark(scene.toString(), "-o", texture.toString(), "--tasks", "2"), 1, "it is one of the scene's inputs");
+        assertArrayEquals(before, Files.readAllBytes(texture), "the texture is untouched");
+        Files.createDirectory(dir.resolve("folder.png"));
+        assertOneLine(spark(scene.toString(), "-o", dir.resolve("folder.png").toString()), 2, "it is a directory");
+        assertOneLine(spark(scene.toString(), "--threads", "40000", "-o", dir.resolve("x.png").toString()), 2,
+                      "--threads must be 1 to 32767, got 40000");
+        assertFalse(Files.exists(dir.resolve("x.png")));
     }
 
     private static void assertOneLine(Result r, int code, String fragment) {

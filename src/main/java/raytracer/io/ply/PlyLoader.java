@@ -46,6 +46,7 @@ public final class PlyLoader {
     private int[] triangles = new int[0];
     private int corners;
     private int faces;
+    private boolean facesRead;
     private int ngons;
 
     private PlyLoader(String file) {
@@ -197,6 +198,11 @@ public final class PlyLoader {
     }
 
     private void readFaces(PlyHeader.Element e, PlyInput in, PlyHeader header) throws IOException, PlyException {
+        if (facesRead) {
+            // the triangles of one would replace the other's while the counts added up
+            throw new PlyException(file + ": a second 'face' element");
+        }
+        facesRead = true;
         List<PlyHeader.Property> properties = e.properties();
         int list = -1;
         for (int k = 0; k < properties.size() && list < 0; k++) {

@@ -56,12 +56,11 @@ final class MeshReader {
     private record ObjectKey(SharedMesh mesh, Material override, String normalMaps, boolean castsShadows) {
     }
 
-    /** The mesh objects of one scene, read from {@code cache} when it has them (null: no cache). */
-    MeshReader(MeshCache cache) {
-        this(cache, new HashMap<>());
-    }
-
-    /** The same, sharing the meshes that {@code shared} holds and adding those it reads to it. */
+    /**
+     * The mesh objects of one scene, read from {@code cache} when it has them (null: no cache),
+     * sharing the meshes that {@code shared} holds (the frames of an animation) and adding those it
+     * reads to it.
+     */
     MeshReader(MeshCache cache, Map<String, SharedMesh> shared) {
         this.cache = cache;
         this.shared = shared;

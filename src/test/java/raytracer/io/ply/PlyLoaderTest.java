@@ -108,6 +108,7 @@ class PlyLoaderTest {
         two corners              | 'HEADER2 0 1\\n'                                                                    | face 0 (of 1, counting from 0): a face needs 3 to 65536 vertices, got 2
         index out of range       | 'HEADER3 0 1 3\\n'                                                                  | face 0 (of 1, counting from 0): vertex index 3 is out of range (the file has 3 vertices)
         negative index           | 'HEADER3 0 -1 2\\n'                                                                 | vertex index -1 is out of range
+        two face elements        | 'ply\\nformat ascii 1.0\\nelement vertex 3\\nproperty float x\\nproperty float y\\nproperty float z\\nelement face 1\\nproperty list uchar int vertex_indices\\nelement face 1\\nproperty list uchar int vertex_indices\\nend_header\\n0 0 0\\n1 0 0\\n0 1 0\\n3 0 1 2\\n3 0 2 1\\n' | a second 'face' element
         truncated face           | 'HEADER3 0 1\\n'                                                                    | face 0 (of 1, counting from 0): the file ends early (truncated)
         not a number             | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 zero 0\\n' | vertex 0 (of 1, counting from 0): property 'y': 'zero' is not a number
         not finite               | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 NaN 0\\n' | vertex 0 (of 1, counting from 0): its position is not finite
