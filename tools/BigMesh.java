@@ -33,7 +33,14 @@ public final class BigMesh {
             System.exit(2);
         }
         Path in = Path.of(args[0]);
-        long target = Long.parseLong(args[1]);
+        long target;
+        try {
+            target = Long.parseLong(args[1]);
+        } catch (NumberFormatException e) {
+            System.err.println("BigMesh: TRIANGLES must be a whole number, e.g. 4000000; got " + args[1]);
+            System.exit(2);
+            return;
+        }
         Path out = Path.of(args[2]);
         double[][] p = new double[1][];
         int[][] t = new int[1][];
@@ -49,11 +56,15 @@ public final class BigMesh {
         grid.build();
         System.err.printf("%s: %d triangles cut %d x %d: %d vertices, %d triangles%n", in, triangles, k, k, grid.vertices,
                           grid.triangleCount);
+        // written beside it and renamed when whole, so that a killed run leaves no truncated mesh that
+        // tools/scale-study, which reuses what it finds, would then measure
+        Path partial = out.resolveSibling(out.getFileName() + ".partial");
         if (out.toString().endsWith(".ply")) {
-            grid.writePly(out);
+            grid.writePly(partial);
         } else {
-            grid.writeObj(out);
+            grid.writeObj(partial);
         }
+        Files.move(partial, out, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
     }
 
     /** Positions and triangles (0-based) of an OBJ file's v and f lines, faces fanned. */
