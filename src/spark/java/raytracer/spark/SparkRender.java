@@ -145,9 +145,12 @@ public final class SparkRender implements Callable<Integer> {
      * render, 2 bad usage. Every failure is one line starting {@code render-spark: error:}.
      */
     public static int run(JavaSparkContext sc, PrintWriter err, String... args) {
-        SparkRender command = new SparkRender(sc, err);
+        // every line, the job's own as picocli's, through the escaping render's lines take: a scene's
+        // or an output's name echoed cannot drive the terminal
+        PrintWriter escaped = new PrintWriter(Terminal.escaping(err), true);
+        SparkRender command = new SparkRender(sc, escaped);
         CommandLine cli = new CommandLine(command);
-        cli.setErr(new PrintWriter(Terminal.escaping(err), true));
+        cli.setErr(escaped);
         cli.setParameterExceptionHandler((ex, a) -> {
             ex.getCommandLine().getErr().println("render-spark: error: " + Terminal.line(ex.getMessage()) + " (see render-spark --help)");
             return BAD_USAGE;

@@ -185,6 +185,12 @@ class SparkRenderTest {
         assertOneLine(spark(scene.toString(), "--threads", "40000", "-o", dir.resolve("x.png").toString()), 2,
                       "--threads must be 1 to 32767, got 40000");
         assertFalse(Files.exists(dir.resolve("x.png")));
+        // the job's own lines (progress, wrote, summary) escape what they echo, as render's do
+        Path odd = Files.copy(scene, dir.resolve("t\u001b[31m.yaml"));
+        Result r = spark(odd.toString(), "-o", dir.resolve("ok\u001b.png").toString(), "--tasks", "2");
+        assertEquals(0, r.code(), r.err());
+        assertFalse(r.err().contains("\u001b"), r.err());
+        assertTrue(r.err().contains("t\\x1b[31m.yaml"), r.err());
     }
 
     private static void assertOneLine(Result r, int code, String fragment) {
