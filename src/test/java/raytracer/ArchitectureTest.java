@@ -66,18 +66,20 @@ class ArchitectureTest {
         Map.entry("image.chart", Set.of("image")),
         // exact images, computed apart from the renderer's code so that they can check it
         Map.entry("reference", Set.of("math", "image")),
+        // folders of files kept between runs: writing through a temporary file is image's AtomicFile
+        Map.entry("cache", Set.of("image")),
         Map.entry("render", Set.of("math", "core", "image")),
         Map.entry("io.obj", union(FAMILIES, Set.of("math", "core", "image"))),
         // a PLY file is one mesh and nothing else (with the triangle's bound on coordinates)
         Map.entry("io.ply", Set.of("math", "shapes", "shapes.mesh")),
         // a scene's mesh objects are OBJ files: the scene reader uses the OBJ reader, not the reverse
-        Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "io.ply", "reference"))),
+        Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "io.ply", "reference", "cache"))),
         // the allocation study's textbook path, beside the renderer; no package may use it (none lists it)
         Map.entry("study", Set.of("math", "core", "brdf", "materials", "lights", "tracers", "render")),
         // a scene file and a render's options made into a scene to render, for the command line and the Spark job
         Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene"))),
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",
-                                                 "image.chart", "api"))));
+                                                 "image.chart", "api", "cache"))));
 
     private static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> all = new HashSet<>(a);

@@ -4,9 +4,13 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.Set;
+import java.util.TreeSet;
+import raytracer.cache.ContentStamp;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.io.scene.LoadedScene;
@@ -126,7 +130,8 @@ final class ConvergeReference {
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
-                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n");
+                          + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n")
+                          + inputs(scene, loaded.report().inputs());
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
         Optional<Film> cached = file == null ? Optional.empty()
@@ -159,6 +164,25 @@ final class ConvergeReference {
             note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, not saved (--no-cache)%n", seconds);
         }
         return new Image(film, noiseRmse, what);
+    }
+
+    /**
+     * One line per file the scene read besides itself (meshes, MTL files, textures, environment
+     * maps), with its content's identity: a reference is rendered again when any of them changes,
+     * as a mesh cache entry is rebuilt.
+     */
+    static String inputs(Path scene, List<Path> inputs) throws IOException {
+        Path folder = scene.toAbsolutePath().normalize().getParent();
+        Set<Path> files = new TreeSet<>();
+        for (Path input : inputs) {
+            files.add(input.toAbsolutePath().normalize());
+        }
+        files.remove(scene.toAbsolutePath().normalize());
+        StringBuilder lines = new StringBuilder();
+        for (Path file : files) {
+            lines.append("input=").append(folder.relativize(file)).append(' ').append(ContentStamp.of(file, "").identity()).append('\n');
+        }
+        return lines.toString();
     }
 
     /** How the command renders: into a film, with a seed, a progress label, returning what it cost. */

@@ -22,9 +22,9 @@ import raytracer.image.ImageWriters;
  * them: {@code <scene name>-<key>.pfm} (the linear image times the scene's exposure, as
  * {@code render -o x.pfm} writes it) and a {@code .txt} beside it saying what it is, with the
  * SHA-256 of the image's bytes: a reference that does not match it is rendered again. The key is a
- * SHA-256 of the scene file's bytes and every setting of the reference render; files the scene
- * reads (meshes, maps) and the renderer's own code are not in it, so delete the file after changing
- * those.
+ * SHA-256 of the scene file's bytes, every setting of the reference render and the content of every
+ * file the scene reads (meshes, MTL files, textures: {@link ConvergeReference#inputs}); the
+ * renderer's own code is not in it, so delete the folder after changing that.
  */
 final class ReferenceCache {
     private final Path dir;

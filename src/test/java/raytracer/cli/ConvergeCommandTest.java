@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -174,6 +175,38 @@ class ConvergeCommandTest {
             assertTrue(r.err().contains("rendering the reference"), r.err());
             assertEquals(rmse, rows(csv).get(0)[4], "the same reference as first rendered");
         }
+    }
+
+    /**
+     * The cached reference is keyed by the content of every file the scene reads: a changed
+     * texture or mesh renders it again. Before, only the scene file and the settings were in the
+     * key, and a changed texture measured an RMSE 28 times too high against the old reference.
+     */
+    @Test
+    void aChangedTextureOrMeshRendersTheReferenceAgain() throws IOException {
+        BufferedImage red = new BufferedImage(2, 2, BufferedImage.TYPE_INT_RGB);
+        red.setRGB(0, 0, 0xff2020);
+        ImageIO.write(red, "png", dir.resolve("t.png").toFile());
+        write("m.obj", "v -1 0 -1\nv 1 0 -1\nv 0 1.5 0\nf 1 2 3\n");
+        Path scene = write("textured.yaml", SPHERES.replace("- {type: plane, normal: [0, 1, 0]}",
+            "- {type: plane, normal: [0, 1, 0], material: floor}\n  - {type: mesh, file: m.obj}")
+            + "materials:\n  floor: {type: matte, texture: {type: image, file: t.png}}\n");
+        String[] args = {scene.toString(), "--spp", "1", "--reference-spp", "16", "--cache", dir.resolve("cache").toString(),
+                         "--plot", dir.resolve("a.png").toString()};
+        Result first = converge(args);
+        assertEquals(0, first.code(), first.err());
+        assertTrue(first.err().contains("rendering the reference"), first.err());
+        Result same = converge(args);
+        assertTrue(same.err().contains("reused"), same.err());
+        red.setRGB(0, 0, 0x20ff20);
+        ImageIO.write(red, "png", dir.resolve("t.png").toFile());
+        Result texture = converge(args);
+        assertEquals(0, texture.code(), texture.err());
+        assertTrue(texture.err().contains("rendering the reference"), "a changed texture: " + texture.err());
+        write("m.obj", "v -1 0 -1\nv 1 0 -1\nv 0 1.2 0\nf 1 2 3\n");
+        Result mesh = converge(args);
+        assertTrue(mesh.err().contains("rendering the reference"), "a changed mesh: " + mesh.err());
+        assertTrue(converge(args).err().contains("reused"));
     }
 
     @Test

@@ -8,21 +8,17 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.FileTime;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
-import java.time.Duration;
-import java.time.Instant;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Consumer;
-import java.util.stream.Stream;
 import raytracer.accel.FlatBVH;
-import raytracer.image.FileKind;
+import raytracer.cache.CacheFolder;
+import raytracer.cache.ContentStamp;
 import raytracer.image.IoReason;
 import raytracer.io.obj.ObjModel;
 import raytracer.shapes.mesh.Mesh;
@@ -49,7 +45,9 @@ import raytracer.shapes.mesh.Mesh;
  * The entries together stay under a cap ({@link #DEFAULT_MAX_BYTES}, {@code --cache-max} or
  * {@value #MAX_ENV}): after writing an entry, the least recently used others are deleted until
  * they fit (an entry read is marked used by its modification time). Temporary files that a killed
- * writer left behind are deleted once they are {@link #STALE_PARTIAL} old.
+ * writer left behind are deleted once they are {@link CacheFolder#STALE_PARTIAL} old. The folder may
+ * hold the user's own files too: {@link CacheFolder} deletes only entries it can prove are the
+ * cache's ({@link #ENTRY_NAME} and the file format's magic bytes).
  */
 public final class MeshCache {
     /** The default cap: some 30 entries of the 871k-triangle dragon (31 MiB each), a small part of a laptop's disk. */
@@ -62,17 +60,19 @@ public final class MeshCache {
      * entry; from 230 KiB (7k triangles) on the cache was faster (docs/performance.md).
      */
     public static final long MIN_OBJ_BYTES = 192 << 10;
-    /** A temporary file this old is a killed writer's: writing an entry takes well under a second. */
-    static final Duration STALE_PARTIAL = Duration.ofHours(1);
     /** The most characters of the OBJ file's name kept in an entry's name. */
     static final int NAME_CHARS = 48;
+    /** An entry's name, as {@link #entryName} makes it. */
+    static final String ENTRY_NAME = "[A-Za-z0-9._-]{1," + NAME_CHARS + "}-[0-9a-f]{16}\\.mesh";
 
     private final Path dir;
+    private final CacheFolder folder;
     private final long maxBytes;
     private final long minObjBytes;
 
     private MeshCache(Path dir, long maxBytes, long minObjBytes) {
         this.dir = dir;
+        this.folder = new CacheFolder(dir, ENTRY_NAME, MeshCacheFile.MAGIC_BYTES);
         this.maxBytes = maxBytes;
         this.minObjBytes = minObjBytes;
     }
@@ -131,15 +131,6 @@ public final class MeshCache {
         return dir;
     }
 
-    /** Makes the folder, saying so when something else is at its name. */
-    private void createDir() throws IOException {
-        FileKind kind = FileKind.of(dir);
-        if (kind != FileKind.DIRECTORY && kind != FileKind.MISSING) {
-            throw new IOException(dir + " is " + kind.words() + ", not a folder");
-        }
-        Files.createDirectories(dir);
-    }
-
     /**
      * Looks for the entry of {@code obj} made with {@code options}, reading it whole: nothing of an
      * entry is used before all of it is checked, and an entry used is marked as used now. A stale
@@ -147,13 +138,13 @@ public final class MeshCache {
      * none, silently (its parse will say why); a small one is not looked up.
      */
     Lookup lookup(Path obj, String options, Consumer<String> warn) {
-        MeshCacheFile.Stamp stamp;
+        ContentStamp stamp;
         try {
             if (uncompressedSize(obj) < minObjBytes) {
                 return new Lookup(this, obj, null, options, null, null, String.format(Locale.ROOT,
                     "smaller than %d KiB: parsed about as fast as read", minObjBytes / 1024));
             }
-            stamp = MeshCacheFile.stamp(obj, "");
+            stamp = ContentStamp.of(obj, "");
         } catch (IOException e) {
             return new Lookup(this, obj, null, options, null, null, null);
         }
@@ -166,7 +157,7 @@ public final class MeshCache {
             MeshCacheFile.Contents contents = MeshCacheFile.read(file, folder);
             String stale = stale(contents.header(), stamp, options, folder);
             if (stale == null) {
-                markUsed(file);
+                CacheFolder.markUsed(file);
                 return new Lookup(this, obj, file, options, stamp, contents, null);
             }
             warn.accept("mesh cache " + file + " is stale (" + stale + "); " + obj.getFileName() + " is parsed again");
@@ -192,27 +183,18 @@ public final class MeshCache {
         }
     }
 
-    /** Least-recently-used order: an entry read now is the most recently used. */
-    private static void markUsed(Path file) {
-        try {
-            Files.setLastModifiedTime(file, FileTime.from(Instant.now()));
-        } catch (IOException e) {
-            // a cache in a read-only folder still serves; it is only evicted sooner
-        }
-    }
-
     /** Why an entry no longer matches its sources, or null when it does. */
-    private static String stale(MeshCacheFile.Header header, MeshCacheFile.Stamp source, String options, Path folder) {
+    private static String stale(MeshCacheFile.Header header, ContentStamp source, String options, Path folder) {
         if (!header.source().equals(source)) {
             return "it is of another file";
         }
         if (!header.options().equals(options)) {
             return "made with " + header.options();
         }
-        for (MeshCacheFile.Stamp library : header.libraries()) {
+        for (ContentStamp library : header.libraries()) {
             Path file = folder.resolve(library.path()).normalize();
             try {
-                if (!MeshCacheFile.stamp(file, library.path()).equals(library)) {
+                if (!ContentStamp.of(file, library.path()).equals(library)) {
                     return file + " changed since";
                 }
             } catch (IOException e) {
@@ -227,72 +209,17 @@ public final class MeshCache {
      * long name would not fit a folder entry with the temporary file's additions), and the first
      * 16 hex digits of a SHA-256 over its content's identity and the options.
      */
-    static String entryName(Path obj, MeshCacheFile.Stamp content, String options) {
+    static String entryName(Path obj, ContentStamp content, String options) {
         String name = obj.getFileName().toString().replaceAll("[^A-Za-z0-9._-]", "_");
         if (name.length() > NAME_CHARS) {
             name = name.substring(0, NAME_CHARS);
         }
-        String identity = content.size() + " " + Long.toHexString(content.digest()) + "\n" + options;
+        String identity = content.identity() + "\n" + options;
         try {
             byte[] digest = MessageDigest.getInstance("SHA-256").digest(identity.getBytes(StandardCharsets.UTF_8));
             return name + "-" + HexFormat.of().formatHex(digest).substring(0, 16) + ".mesh";
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-256 is missing from this Java", e);
-        }
-    }
-
-    /**
-     * Deletes the least recently used entries but {@code kept} until all fit under the cap;
-     * returns how many it deleted. Another process deleting one first is no failure.
-     */
-    private int evict(Path kept) throws IOException {
-        record Entry(Path file, long size, FileTime used) {
-        }
-        List<Entry> entries = new ArrayList<>();
-        long total = 0;
-        try (Stream<Path> files = Files.list(dir)) {
-            for (Path file : (Iterable<Path>) files::iterator) {
-                if (file.getFileName().toString().endsWith(".mesh") && Files.isRegularFile(file)) {
-                    try {
-                        Entry e = new Entry(file, Files.size(file), Files.getLastModifiedTime(file));
-                        entries.add(e);
-                        total += e.size();
-                    } catch (IOException gone) {
-                        // deleted meanwhile
-                    }
-                }
-            }
-        }
-        entries.sort(Comparator.comparing(Entry::used));
-        int evicted = 0;
-        for (Entry e : entries) {
-            if (total <= maxBytes) {
-                break;
-            }
-            if (!e.file().equals(kept)) {
-                Files.deleteIfExists(e.file());
-                total -= e.size();
-                evicted++;
-            }
-        }
-        return evicted;
-    }
-
-    /** Deletes the temporary files of writers killed before they finished ({@link #STALE_PARTIAL} old). */
-    private void removeStalePartials() throws IOException {
-        Instant before = Instant.now().minus(STALE_PARTIAL);
-        try (Stream<Path> files = Files.list(dir)) {
-            for (Path file : (Iterable<Path>) files::iterator) {
-                String name = file.getFileName().toString();
-                try {
-                    if (name.startsWith(".") && name.endsWith(".partial") && Files.isRegularFile(file)
-                        && Files.getLastModifiedTime(file).toInstant().isBefore(before)) {
-                        Files.deleteIfExists(file);
-                    }
-                } catch (IOException gone) {
-                    // renamed into place or deleted meanwhile
-                }
-            }
         }
     }
 
@@ -309,12 +236,12 @@ public final class MeshCache {
         private final Path obj;
         private final Path file;
         private final String options;
-        private final MeshCacheFile.Stamp source;
+        private final ContentStamp source;
         private MeshCacheFile.Contents contents;
         /** Why the mesh is not cached at all (too small), or null. */
         private final String notCached;
 
-        private Lookup(MeshCache cache, Path obj, Path file, String options, MeshCacheFile.Stamp source,
+        private Lookup(MeshCache cache, Path obj, Path file, String options, ContentStamp source,
                        MeshCacheFile.Contents contents, String notCached) {
             this.cache = cache;
             this.obj = obj;
@@ -363,15 +290,18 @@ public final class MeshCache {
             }
             Path folder = obj.toAbsolutePath().getParent();
             try {
-                List<MeshCacheFile.Stamp> libraries = new ArrayList<>();
+                List<ContentStamp> libraries = new ArrayList<>();
                 for (Path library : model.libraries()) {
-                    libraries.add(MeshCacheFile.stamp(library, folder.relativize(library.toAbsolutePath().normalize()).toString()));
+                    libraries.add(ContentStamp.of(library, folder.relativize(library.toAbsolutePath().normalize()).toString()));
                 }
                 MeshCacheFile.Header h = new MeshCacheFile.Header(source, options, libraries, model.faces(), model.ngons(),
                     mesh.vertexCount(), mesh.triangleCount(), mesh.hasNormals(), mesh.hasUvs(), mesh.materialIds() != null,
                     mesh.bounds(), model.materials(), model.sheets());
-                cache.createDir();
-                MeshCacheFile.write(file, h, mesh, bvh, folder);
+                CacheFolder.Trimmed trimmed = cache.folder.store(file, MeshCacheFile.body(h, mesh, bvh, folder), cache.maxBytes);
+                if (trimmed.failure() != null) {
+                    warn.accept("cannot keep the mesh cache " + cache.dir + " under its cap (" + IoReason.of(trimmed.failure()) + ")");
+                }
+                return new Stored(true, trimmed.evicted(), null);
             } catch (IOException e) {
                 warn.accept("cannot write the mesh cache " + file + " (" + IoReason.of(e) + "); the mesh will be parsed again next time");
                 return new Stored(false, 0, null);
@@ -379,13 +309,6 @@ public final class MeshCache {
                 warn.accept("cannot write the mesh cache " + file + " (" + (e.getMessage() != null ? e.getMessage()
                             : e.getClass().getSimpleName()) + "); the mesh will be parsed again next time");
                 return new Stored(false, 0, null);
-            }
-            try {
-                cache.removeStalePartials();
-                return new Stored(true, cache.evict(file), null);
-            } catch (IOException e) {
-                warn.accept("cannot keep the mesh cache " + cache.dir + " under its cap (" + IoReason.of(e) + ")");
-                return new Stored(true, 0, null);
             }
         }
     }

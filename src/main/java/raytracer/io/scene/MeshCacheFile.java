@@ -6,15 +6,13 @@ import java.nio.BufferUnderflowException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.List;
 import java.util.Set;
-import java.util.zip.CRC32;
-import java.util.zip.CRC32C;
 import raytracer.accel.BvhFile;
 import raytracer.accel.FlatBVH;
+import raytracer.cache.ContentStamp;
 import raytracer.image.AtomicFile;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.math.BBox;
@@ -43,17 +41,11 @@ final class MeshCacheFile {
      */
     static final int VERSION = 5;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
+    /** The first bytes of every entry, by which the cache knows its own files among others in its folder. */
+    static final byte[] MAGIC_BYTES = {'R', 'T', 'M', 'E', 'S', 'H', 0, 0};
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
     private MeshCacheFile() {
-    }
-
-    /**
-     * The identity of a file a cached mesh was made from: its content (size, and CRC-32C and CRC-32
-     * of its bytes as one 64-bit digest) and, for an MTL file, its path relative to the OBJ file's
-     * folder (empty for the OBJ file itself, which the entry's name finds by content).
-     */
-    record Stamp(String path, long size, long digest) {
     }
 
     /**
@@ -61,7 +53,7 @@ final class MeshCacheFile {
      * options it was made with, the figures --stats prints, the mesh's exact bounds (for the scene
      * analysis), its MTL materials and which of them are open sheets ({@link raytracer.io.obj.ObjModel#sheets}).
      */
-    record Header(Stamp source, String options, List<Stamp> libraries, int faces, int ngons, int vertices,
+    record Header(ContentStamp source, String options, List<ContentStamp> libraries, int faces, int ngons, int vertices,
                   int triangles, boolean normals, boolean uvs, boolean materialIds, BBox bounds,
                   List<ObjMaterial> materials, Set<Integer> sheets) {
     }
@@ -76,13 +68,14 @@ final class MeshCacheFile {
     }
 
     /**
-     * Writes the file atomically (temporary file and rename), streamed through a small buffer;
-     * texture paths are written relative to {@code folder}, the OBJ file's.
+     * What writes the file, streamed through a small buffer (the caller writes it through a
+     * temporary file and a rename); texture paths are written relative to {@code folder}, the OBJ
+     * file's.
      */
-    static void write(Path file, Header header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
+    static AtomicFile.Body body(Header header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
         byte[] head = MeshCacheHeader.encode(header, folder);
         long length = align(PREAMBLE + head.length) + arrays(mesh) + align(BvhFile.size(bvh)) + 4;
-        AtomicFile.replace(file, stream -> {
+        return stream -> {
             ChecksummedOutput out = new ChecksummedOutput(stream);
             try {
                 out.putLong(MAGIC);
@@ -106,7 +99,7 @@ final class MeshCacheFile {
             } catch (UncheckedIOException e) {
                 throw e.getCause();
             }
-        });
+        };
     }
 
     /**
@@ -324,26 +317,4 @@ final class MeshCacheFile {
         return (bytes + 7) & ~7L;
     }
 
-    /** The content stamp of a file now, recorded under {@code path}. */
-    static Stamp stamp(Path file, String path) throws IOException {
-        long size = Files.size(file);
-        CRC32C crcC = new CRC32C();
-        CRC32 crc = new CRC32();
-        // read through one small buffer, not mapped: a mapping's pages count in the process's RSS
-        // until the mapping is collected, and a mesh's source is stamped before its entry is read
-        // (a 141 MB OBJ read from the cache took 347 MiB of RSS mapped, its 66 MB PLY twin 270)
-        ByteBuffer buffer = ByteBuffer.allocateDirect(1 << 20);
-        try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
-            // the first size bytes, as Files.size saw them, should the file grow meanwhile
-            for (long left = size; left > 0 && channel.read(buffer) >= 0; ) {
-                buffer.flip();
-                buffer.limit((int) Math.min(buffer.limit(), left));
-                left -= buffer.remaining();
-                crcC.update(buffer.duplicate());
-                crc.update(buffer);
-                buffer.clear();
-            }
-        }
-        return new Stamp(path, size, crcC.getValue() << 32 | crc.getValue());
-    }
 }

@@ -10,9 +10,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import raytracer.cache.ContentStamp;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.io.scene.MeshCacheFile.Header;
-import raytracer.io.scene.MeshCacheFile.Stamp;
 import raytracer.math.BBox;
 
 /**
@@ -32,7 +32,7 @@ final class MeshCacheHeader {
         writeStamp(out, h.source());
         out.writeUTF(h.options());
         out.writeInt(h.libraries().size());
-        for (Stamp library : h.libraries()) {
+        for (ContentStamp library : h.libraries()) {
             writeStamp(out, library);
         }
         out.writeInt(h.faces());
@@ -61,9 +61,9 @@ final class MeshCacheHeader {
     /** The header of its bytes; texture paths are resolved against {@code folder}, the OBJ file's now. */
     static Header decode(byte[] head, Path folder) throws IOException {
         DataInputStream in = new DataInputStream(new ByteArrayInputStream(head));
-        Stamp source = readStamp(in);
+        ContentStamp source = readStamp(in);
         String options = in.readUTF();
-        List<Stamp> libraries = new ArrayList<>();
+        List<ContentStamp> libraries = new ArrayList<>();
         for (int i = count(in); i > 0; i--) {
             libraries.add(readStamp(in));
         }
@@ -147,13 +147,13 @@ final class MeshCacheHeader {
                                in.readDouble());
     }
 
-    private static void writeStamp(DataOutputStream out, Stamp s) throws IOException {
+    private static void writeStamp(DataOutputStream out, ContentStamp s) throws IOException {
         out.writeUTF(s.path());
         out.writeLong(s.size());
         out.writeLong(s.digest());
     }
 
-    private static Stamp readStamp(DataInputStream in) throws IOException {
-        return new Stamp(in.readUTF(), in.readLong(), in.readLong());
+    private static ContentStamp readStamp(DataInputStream in) throws IOException {
+        return new ContentStamp(in.readUTF(), in.readLong(), in.readLong());
     }
 }

@@ -126,12 +126,104 @@ class MeshCacheLimitsTest {
     @Test
     void stalePartialFilesAreRemovedAndFreshOnesKept() throws Exception {
         Path cacheDir = Files.createDirectories(dir.resolve("cache"));
-        Path stale = Files.writeString(cacheDir.resolve(".m.obj-0123456789abcdef.mesh.x1.partial"), "killed");
-        Files.setLastModifiedTime(stale, FileTime.from(Instant.now().minus(2, ChronoUnit.HOURS)));
-        Path fresh = Files.writeString(cacheDir.resolve(".m.obj-0123456789abcdef.mesh.x2.partial"), "being written");
+        Path stale = Files.writeString(cacheDir.resolve(".m.obj-0123456789abcdef.mesh.x1.partial"), "RTMESH\0\0 killed");
+        Path empty = Files.writeString(cacheDir.resolve(".m.obj-0123456789abcdef.mesh.x3.partial"), "");
+        for (Path old : List.of(stale, empty)) {
+            Files.setLastModifiedTime(old, FileTime.from(Instant.now().minus(2, ChronoUnit.HOURS)));
+        }
+        Path fresh = Files.writeString(cacheDir.resolve(".m.obj-0123456789abcdef.mesh.x2.partial"), "RTMESH\0\0 being written");
         load(grid(dir.resolve("p"), "m.obj", 10, 0.1), MeshCache.in(cacheDir, Long.MAX_VALUE, 0));
         assertFalse(Files.exists(stale), "a writer's leftover more than an hour old");
+        assertFalse(Files.exists(empty), "a writer killed before it wrote a byte");
         assertTrue(Files.exists(fresh), "another process may be writing this one");
+    }
+
+    /**
+     * A --cache-dir may be a folder of the user's own (models/, say): eviction deleted every *.mesh
+     * file in it and any .*.partial an hour old. The cache touches only files it can prove it
+     * wrote: named as its entries and starting with its format's magic bytes.
+     */
+    @Test
+    void eviction_touchesOnlyTheCachesOwnFiles() throws Exception {
+        Path models = Files.createDirectories(dir.resolve("models"));
+        Path old = dir.resolve("elsewhere.bin");
+        Files.writeString(old, "the user's");
+        List<Path> users = new java.util.ArrayList<>(List.of(
+            Files.writeString(models.resolve("character.mesh"), "a mesh of another program"),
+            Files.writeString(models.resolve("notes.txt"), "notes"),
+            // named as an entry is, but not one: no magic bytes
+            Files.writeString(models.resolve("rock.obj-0123456789abcdef.mesh"), "x".repeat(5000)),
+            // a temporary name of an entry, an hour old, but not the cache's content
+            Files.writeString(models.resolve(".rock.obj-0123456789abcdef.mesh.abc.partial"), "draft"),
+            Files.writeString(models.resolve(".backup.partial"), "the user's draft")));
+        users.add(Files.createSymbolicLink(models.resolve("tree.obj-fedcba9876543210.mesh"), old));
+        for (Path p : users) {
+            Files.setLastModifiedTime(p, FileTime.from(Instant.now().minus(3, ChronoUnit.HOURS)));
+        }
+        // an entry of the cache's own, least recently used
+        Path a = grid(dir.resolve("a"), "a.obj", 20, 0.1);
+        load(a, MeshCache.in(models, Long.MAX_VALUE, 0));
+        Path first = entries(models).stream().filter(p -> p.getFileName().toString().startsWith("a.obj-")).findFirst().orElseThrow();
+        Files.setLastModifiedTime(first, FileTime.from(Instant.now().minus(2, ChronoUnit.HOURS)));
+        // a cap with room for one entry alone: everything else in the folder is over it
+        LoadReport second = load(grid(dir.resolve("b"), "b.obj", 20, 0.2), MeshCache.in(models, Files.size(first) + 100, 0));
+        assertTrue(second.statistics().toString().contains("1 least recently used entry evicted"), second.statistics().toString());
+        assertFalse(Files.exists(first), "the cache's own older entry is evicted");
+        for (Path p : users) {
+            assertTrue(Files.exists(p, java.nio.file.LinkOption.NOFOLLOW_LINKS), p + " is the user's and must stay");
+        }
+        assertEquals("the user's", Files.readString(old));
+    }
+
+    /**
+     * Writers in several threads (or processes) storing at once, with a cap that holds two entries:
+     * once all are done the cache is under its cap. Each writes and trims under the folder's lock;
+     * without it two writers could each miss the other's entry in their listing.
+     */
+    @Test
+    void concurrentWritersKeepTheCap() throws Exception {
+        Path cacheDir = dir.resolve("cache");
+        int writers = 6;
+        List<Path> objs = new java.util.ArrayList<>();
+        for (int i = 0; i < writers; i++) {
+            objs.add(grid(dir.resolve("w" + i), "w" + i + ".obj", 12, 0.1 + i / 10.0));
+        }
+        load(objs.get(0), MeshCache.in(dir.resolve("probe"), Long.MAX_VALUE, 0));
+        long entry;
+        try (Stream<Path> files = Files.list(dir.resolve("probe"))) {
+            entry = Files.size(files.filter(p -> p.toString().endsWith(".mesh")).findFirst().orElseThrow());
+        }
+        long cap = 2 * entry + entry / 2;
+        for (int round = 0; round < 3; round++) {
+            java.util.concurrent.CyclicBarrier start = new java.util.concurrent.CyclicBarrier(writers);
+            List<Thread> threads = new java.util.ArrayList<>();
+            List<Throwable> failures = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
+            for (Path obj : objs) {
+                Thread t = new Thread(() -> {
+                    try {
+                        start.await();
+                        load(obj, MeshCache.in(cacheDir, cap, 0));
+                    } catch (Throwable e) {
+                        failures.add(e);
+                    }
+                });
+                threads.add(t);
+                t.start();
+            }
+            for (Thread t : threads) {
+                t.join();
+            }
+            assertEquals(List.of(), failures);
+            long total = 0;
+            for (Path p : entries(cacheDir)) {
+                total += Files.size(p);
+            }
+            assertTrue(total <= cap, "round " + round + ": " + total + " bytes in " + entries(cacheDir) + ", cap " + cap);
+            // every mesh is written afresh next round
+            for (Path p : entries(cacheDir)) {
+                Files.delete(p);
+            }
+        }
     }
 
     @Test

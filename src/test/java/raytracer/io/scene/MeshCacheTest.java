@@ -109,7 +109,7 @@ class MeshCacheTest {
     }
 
     private Path entry() throws IOException {
-        try (Stream<Path> files = Files.list(dir.resolve("cache"))) {
+        try (Stream<Path> files = cacheFiles(dir.resolve("cache"))) {
             List<Path> all = files.toList();
             assertEquals(1, all.size(), all.toString());
             return all.get(0);
@@ -184,7 +184,7 @@ class MeshCacheTest {
         assertEquals(List.of(), edited.report().warnings());
         assertTrue(mentions(edited.report(), "written to the mesh cache"), edited.report().statistics().toString());
         assertArrayEquals(reference.image(), edited.image());
-        try (Stream<Path> files = Files.list(dir.resolve("cache"))) {
+        try (Stream<Path> files = cacheFiles(dir.resolve("cache"))) {
             assertEquals(2, files.count());
         }
         // an MTL file it read changed
@@ -260,7 +260,7 @@ class MeshCacheTest {
         Files.copy(scene, other.resolve("s.yaml"));
         run(other.resolve("s.yaml"), MeshCache.in(other.resolve("cache"), Long.MAX_VALUE, 0));
         byte[] otherEntry;
-        try (Stream<Path> files = Files.list(other.resolve("cache"))) {
+        try (Stream<Path> files = cacheFiles(other.resolve("cache"))) {
             otherEntry = Files.readAllBytes(files.findFirst().orElseThrow());
         }
         grid(8);
@@ -313,7 +313,7 @@ class MeshCacheTest {
         run(scene(""), cache());
         run(scene(", smooth: true"), cache());
         run(scene(", bvh: sah"), cache());
-        try (Stream<Path> files = Files.list(dir.resolve("cache"))) {
+        try (Stream<Path> files = cacheFiles(dir.resolve("cache"))) {
             assertEquals(3, files.count());
         }
         assertTrue(mentions(run(scene(", bvh: sah"), cache()).report(), "read from the mesh cache"));
@@ -343,5 +343,10 @@ class MeshCacheTest {
         assertEquals(Path.of("/x/raytracer/meshes"), MeshCache.defaultDir(Map.of("XDG_CACHE_HOME", "/x"), "/home/u"));
         assertEquals(Path.of("/home/u/.cache/raytracer/meshes"), MeshCache.defaultDir(Map.of(), "/home/u"));
         assertEquals(Path.of("/home/u/.cache/raytracer/meshes"), MeshCache.defaultDir(Map.of("XDG_CACHE_HOME", "rel"), "/home/u"));
+    }
+
+    /** The files of a cache folder but its lock file, which stays once made. */
+    private static Stream<Path> cacheFiles(Path folder) throws IOException {
+        return Files.list(folder).filter(p -> !p.getFileName().toString().equals(".raytracer-cache.lock"));
     }
 }
