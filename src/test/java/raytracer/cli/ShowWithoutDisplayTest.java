@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.net.BindException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -62,7 +65,10 @@ class ShowWithoutDisplayTest {
         Process child = builder.start();
         CompletableFuture<String> out = CompletableFuture.supplyAsync(() -> text(child.getInputStream()));
         CompletableFuture<String> err = CompletableFuture.supplyAsync(() -> text(child.getErrorStream()));
-        assertTrue(child.waitFor(60, TimeUnit.SECONDS), "render did not end");
+        if (!child.waitFor(60, TimeUnit.SECONDS)) {
+            child.destroyForcibly().waitFor();
+            throw new AssertionError("render did not end within 60 s; stderr: " + err.get());
+        }
         return new Run(child.exitValue(), out.get(), err.get());
     }
 
@@ -103,6 +109,38 @@ class ShowWithoutDisplayTest {
             assertTrue(run.err().contains((String) c[2]), why);
             assertFalse(Files.exists(out), why);
         }
+    }
+
+    /**
+     * A display that accepts the connection and never answers (a stalled X server, a dead ssh -X
+     * forward): the check is bounded ({@link GraphicalDisplay#ANSWER_SECONDS}) and fails with the
+     * one line. Before, render blocked for ever before any work, silent.
+     */
+    @Test
+    void aDisplayThatNeverAnswersIsOneLineAndStatusTwo() throws Exception {
+        try (ServerSocket silent = bindDisplayPort()) {
+            int display = silent.getLocalPort() - 6000;
+            Path out = dir.resolve("out.png");
+            Run run = render(Map.of("DISPLAY", "127.0.0.1:" + display), List.of(), "-o", out.toString(), "--show");
+            String why = run.err();
+            assertEquals(ErrorReport.BAD_USAGE, run.status(), why);
+            assertEquals(List.of("render: error: --show needs a graphical display: the display DISPLAY=127.0.0.1:" + display
+                                 + " did not answer in " + GraphicalDisplay.ANSWER_SECONDS
+                                 + " s (a stalled X server or a dead ssh -X forward?) (see render --help)"), run.errLines());
+            assertFalse(Files.exists(out), why);
+        }
+    }
+
+    /** A loopback port of an X display (6000 + n) that takes connections into its backlog and never answers them. */
+    private static ServerSocket bindDisplayPort() throws IOException {
+        for (int n = 4321; n < 4400; n++) {
+            try {
+                return new ServerSocket(6000 + n, 50, InetAddress.getLoopbackAddress());
+            } catch (BindException taken) {
+                // try the next
+            }
+        }
+        throw new IOException("no free display port from 6000 + 4321 to 6000 + 4399");
     }
 
     @Test

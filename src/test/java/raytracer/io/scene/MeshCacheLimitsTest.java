@@ -144,7 +144,7 @@ class MeshCacheLimitsTest {
      * wrote: named as its entries and starting with its format's magic bytes.
      */
     @Test
-    void eviction_touchesOnlyTheCachesOwnFiles() throws Exception {
+    void evictionTouchesOnlyTheCachesOwnFiles() throws Exception {
         Path models = Files.createDirectories(dir.resolve("models"));
         Path old = dir.resolve("elsewhere.bin");
         Files.writeString(old, "the user's");
