@@ -111,12 +111,14 @@ final class ShowCapture {
      * The screen's pixels in {@code r} once two reads 100 ms apart agree (the last repaint has reached
      * the server) and show more than one colour: on a loaded machine a window can be mapped, and
      * titled done, before its picture is first painted, and two reads of the bare background agree.
-     * None of the tests' images is one flat colour; after 5 s the last read is returned as it is.
+     * None of the tests' images is one flat colour. A busy machine can take seconds to paint (one
+     * all-black capture was seen after 5 s), so the wait is as long as the window's own: the
+     * first read that passes is taken, and after {@link #TIMEOUT_NANOS} the last read as it is.
      */
     private static BufferedImage steadyCapture(Robot robot, Rectangle r) throws InterruptedException {
         robot.waitForIdle();
         BufferedImage before = robot.createScreenCapture(r);
-        for (int i = 0; i < 50; i++) {
+        for (long end = System.nanoTime() + TIMEOUT_NANOS; System.nanoTime() < end; ) {
             Thread.sleep(100);
             robot.waitForIdle();
             BufferedImage now = robot.createScreenCapture(r);

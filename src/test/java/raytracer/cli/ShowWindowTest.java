@@ -119,7 +119,8 @@ class ShowWindowTest {
                 return e.toString();
             }
         });
-        if (!child.waitFor(90, TimeUnit.SECONDS)) {
+        // longer than ShowCapture's own waits together (the window, then its paint), so that it reports first
+        if (!child.waitFor(180, TimeUnit.SECONDS)) {
             child.destroyForcibly();
             fail("the window's JVM did not end: " + err.getNow(""));
         }
