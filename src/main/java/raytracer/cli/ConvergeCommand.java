@@ -29,6 +29,7 @@ import raytracer.image.ErrorMetrics;
 import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.io.scene.SceneException;
+import raytracer.io.scene.SceneFile;
 import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneLoader;
 import raytracer.render.RenderStats;
@@ -109,6 +110,10 @@ final class ConvergeCommand implements Callable<Integer> {
     @Mixin
     FilterOptions filter = new FilterOptions();
 
+    @Option(names = "--frame", paramLabel = "N",
+            description = "The frame of an animated scene to converge, from 0. Default: 0, the frame render renders without --frames.")
+    int frame;
+
     @Option(names = {"-W", "--width"}, paramLabel = "W", description = "Image width (overrides the scene).")
     Integer width;
 
@@ -173,6 +178,7 @@ final class ConvergeCommand implements Callable<Integer> {
         Path plotFile = plot != null ? plot : Path.of(stem(scene) + "-convergence.png");
         boolean csvToStdout = csv != null && csv.toString().equals("-");
         checkOutputs(plotFile, csvToStdout);
+        boolean animated = checkFrame(note);
         LoadedScene base = load(ConvergeConfig.SCENE, err);
         checkNotInputs(base, plotFile, csvToStdout);
         ViewPlane vp = base.world().viewPlane();
@@ -202,8 +208,8 @@ final class ConvergeCommand implements Callable<Integer> {
         } else if (csv != null) {
             AtomicFile.write(csv, o -> o.write(ConvergeReport.csv(rows).getBytes(StandardCharsets.UTF_8)));
         }
-        String title = scene.getFileName() + ": error against render time (" + vp.hres() + "x" + vp.vres() + ", " + threads
-                       + " thread" + (threads == 1 ? "" : "s") + ")";
+        String title = scene.getFileName() + (animated ? " frame " + frame : "") + ": error against render time (" + vp.hres() + "x"
+                       + vp.vres() + ", " + threads + " thread" + (threads == 1 ? "" : "s") + ")";
         ConvergeReport.chart(title, rows, noise).writePng(plotFile, PLOT_WIDTH, PLOT_HEIGHT);
         note.println("converge: plot written to " + plotFile);
         return 0;
@@ -220,6 +226,24 @@ final class ConvergeCommand implements Callable<Integer> {
             usageIf(why != null, "cannot write " + csv + ": " + why);
             usageIf(OutputFile.same(csv, plotFile), "--plot and --csv name the same file, " + csv);
         }
+    }
+
+    /**
+     * Refuses a --frame the scene does not have, a usage error; of an animated scene, says which
+     * frame is converged, since a table of frame 0 alone could be taken for the animation's.
+     * Returns whether the scene is animated.
+     */
+    private boolean checkFrame(PrintWriter note) throws SceneException {
+        SceneFile file = SceneFile.read(scene, null);
+        if (!file.animated()) {
+            usageIf(frame != 0, "--frame " + frame + ": the scene has no animation section (a still is frame 0)");
+            return false;
+        }
+        usageIf(frame < 0 || frame >= file.frames(), "--frame " + frame + ": the scene's animation has " + file.frames() + " frame"
+                + (file.frames() == 1 ? "" : "s") + ", 0 to " + (file.frames() - 1));
+        note.println("converge: the scene is animated; converging frame " + frame + " of its " + file.frames()
+                     + (spec.commandLine().getParseResult().hasMatchedOption("--frame") ? "" : " (--frame N picks another)"));
+        return true;
     }
 
     /** Refuses an output that the run reads: the scene, a file it reads, the --reference image. */
@@ -295,7 +319,8 @@ final class ConvergeCommand implements Callable<Integer> {
      * warnings go to {@code warnings} unless that is null.
      */
     private LoadedScene load(ConvergeConfig config, PrintWriter warnings) throws SceneException {
-        LoadedScene loaded = SceneLoader.load(scene, config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples()));
+        OptionalInt lightSamples = config.lightSamples() == null ? OptionalInt.empty() : OptionalInt.of(config.lightSamples());
+        LoadedScene loaded = SceneLoader.load(scene, lightSamples, frame);
         World world = loaded.world();
         if (!quiet && warnings != null) {
             loaded.report().warnings().forEach(w -> warnings.println("render converge: warning: " + Terminal.line(w)));
@@ -339,7 +364,7 @@ final class ConvergeCommand implements Callable<Integer> {
         if (cache != null) {
             cache.checkFolder();
         }
-        return ConvergeReference.rendered(scene, Files.readAllBytes(scene), base, referenceSpp, ~seed, cache, this::render, note);
+        return ConvergeReference.rendered(scene, Files.readAllBytes(scene), frame, base, referenceSpp, ~seed, cache, this::render, note);
     }
 
     /** Renders one configuration: a warm-up, then each sample count and each time budget. */

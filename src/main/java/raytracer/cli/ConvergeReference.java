@@ -119,9 +119,10 @@ final class ConvergeReference {
      * The scene rendered without a cutoff in two independent halves of {@code spp / 2} samples,
      * seeds {@code seed} and {@code seed ^ OTHER_HALF}, averaged; the halves' difference measures the
      * average's own noise: with independent halves of equal variance, its RMSE is RMSE(a, b) / 2.
-     * Read from the cache when it is there and stored in it when not ({@code cache} null: neither).
+     * Read from the cache when it is there and stored in it when not ({@code cache} null: neither);
+     * {@code frame} is the frame of an animated scene that {@code loaded} holds, part of the cache's key.
      */
-    static Image rendered(Path scene, byte[] sceneBytes, LoadedScene loaded, int spp, long seed, ReferenceCache cache,
+    static Image rendered(Path scene, byte[] sceneBytes, int frame, LoadedScene loaded, int spp, long seed, ReferenceCache cache,
                           Renderings render, PrintWriter note) throws IOException {
         World world = loaded.world();
         ViewPlane vp = world.viewPlane().withSamples(Math.max(1, spp / 2));
@@ -131,6 +132,8 @@ final class ConvergeReference {
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
                           + (vp.filter().isBox() ? "" : "filter=" + vp.filter().name() + "\nfilter-radius=" + vp.filter().radius() + "\n")
+                          // frame 0 unnamed: the key of a still's reference, or of frame 0 of an animation, stays what it was
+                          + (frame == 0 ? "" : "frame=" + frame + "\n")
                           + inputs(scene, loaded.report().inputs());
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);

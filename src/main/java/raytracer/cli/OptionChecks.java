@@ -1,8 +1,5 @@
 package raytracer.cli;
 
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.function.Supplier;
@@ -15,7 +12,8 @@ import raytracer.render.Workers;
 /**
  * Checks the option values that picocli's types cannot (ranges, names, the output file) and parses
  * them into a {@link RenderRequest}. Every bad value is a usage error, exit code 2, found before
- * the scene is loaded. The options that change the scene are checked as {@link SceneOptions}.
+ * the scene is loaded; the files of --frames are checked by {@link FrameOutputs} once the scene is
+ * read, before any is made. The options that change the scene are checked as {@link SceneOptions}.
  */
 final class OptionChecks {
     private final CommandLine commandLine;
@@ -45,12 +43,10 @@ final class OptionChecks {
             }
         }
         Path out = frames != null ? FrameFiles.name(pattern, frames.first()) : o.output != null ? o.output : OutputFile.defaultFor(o.scene);
-        if (frames != null) {
-            makeFolder(out);
-        }
-        String unwritable = OutputFile.whyUnwritable(out);
+        // a bad -o is a bad option value, found before rendering, not after; the frames' files are
+        // checked by FrameOutputs, once the scene says which frames there are and their size (--resume)
+        String unwritable = frames != null ? null : OutputFile.whyUnwritable(out);
         if (unwritable != null) {
-            // a bad -o is a bad option value, found before rendering, not after
             throw new ParameterException(commandLine, "cannot write " + out + ": " + unwritable);
         }
         if (o.show) {
@@ -61,22 +57,6 @@ final class OptionChecks {
             }
         }
         return new RenderRequest(o.scene, out, options, o.threads, o.repeat, o.stats, o.quiet, o.show, frames, pattern, o.resume);
-    }
-
-    /**
-     * Makes the folder of an animation's frames when it is missing, as the Spark job's file system
-     * does: a hundred frames go to a folder of their own, and the same command then works on one
-     * machine and on a cluster. A folder that cannot be made is left to the writability check, which says why.
-     */
-    private static void makeFolder(Path frame) {
-        Path folder = frame.toAbsolutePath().getParent();
-        if (folder != null && !Files.exists(folder, LinkOption.NOFOLLOW_LINKS)) {
-            try {
-                Files.createDirectories(folder);
-            } catch (IOException | SecurityException e) {
-                // reported by OutputFile.whyUnwritable below, in the words it uses for any folder
-            }
-        }
     }
 
     /**

@@ -32,6 +32,14 @@ public final class OutputFile {
 
     /** Why the image could not be written to {@code out}, or null if it can be. */
     public static String whyUnwritable(Path out) {
+        return whyUnwritable(out, false);
+    }
+
+    /**
+     * As {@link #whyUnwritable(Path)}; with {@code folderMayBeMade}, a missing folder is no reason
+     * when it can be made: the nearest part of its path that exists is a folder one can write in.
+     */
+    static String whyUnwritable(Path out, boolean folderMayBeMade) {
         String extensions = String.join(", ", ImageWriters.EXTENSIONS);
         if (Files.isDirectory(out)) {
             return "it is a directory; give a file name ending in one of " + extensions;
@@ -39,11 +47,15 @@ public final class OutputFile {
         if (!ImageWriters.isSupported(out)) {
             return "unsupported extension (use one of " + extensions + ")";
         }
-        return whyNotWritable(out);
+        return whyNotWritable(out, folderMayBeMade);
     }
 
     /** Why any file could not be written to {@code out} (whatever its name), or null if it can be. */
     static String whyNotWritable(Path out) {
+        return whyNotWritable(out, false);
+    }
+
+    private static String whyNotWritable(Path out, boolean folderMayBeMade) {
         Path file;
         try {
             file = AtomicFile.destination(out);
@@ -67,6 +79,9 @@ public final class OutputFile {
             return "it is " + kind.words() + ", not a regular file";
         }
         Path dir = file.toAbsolutePath().getParent();
+        if (folderMayBeMade && dir != null && kind == FileKind.MISSING && !Files.isDirectory(dir)) {
+            return whyNoFolder(dir);
+        }
         if (dir == null || !Files.isDirectory(dir)) {
             return (file.equals(out.toAbsolutePath()) ? "" : "it is a symbolic link to " + file + ", and ")
                    + "directory " + dir + " does not exist";
@@ -78,6 +93,28 @@ public final class OutputFile {
             return "it is read-only";
         }
         return null;
+    }
+
+    /**
+     * Why folder {@code dir}, missing, cannot be made, or null: the nearest part of its path that
+     * is there must be a folder (or a link to one) that one can write in.
+     */
+    private static String whyNoFolder(Path dir) {
+        Path there = dir;
+        while (there != null && FileKind.ofLink(there) == FileKind.MISSING) {
+            there = there.getParent();
+        }
+        if (there == null) {
+            return "no part of folder " + dir + " exists";
+        }
+        FileKind kind = FileKind.of(there);
+        if (kind == FileKind.MISSING) {
+            return "folder " + dir + " cannot be made: " + there + " is a symbolic link to nothing";
+        }
+        if (kind != FileKind.DIRECTORY) {
+            return "folder " + dir + " cannot be made: " + there + " is " + kind.words() + ", not a folder";
+        }
+        return Files.isWritable(there) ? null : "folder " + dir + " cannot be made: folder " + there + " is not writable";
     }
 
     /**

@@ -44,7 +44,9 @@ public final class RenderCommand implements Callable<Integer> {
     String frames;
 
     @Option(names = "--resume",
-            description = "With --frames: skip the frames whose file is already complete (an interrupted animation goes on).")
+            description = "With --frames: skip the frames whose file is already a whole image of the run's size, checked to "
+                          + "its last byte (an interrupted animation goes on); one damaged or of another size is rendered again, "
+                          + "with a warning.")
     boolean resume;
 
     @Option(names = "--repeat", paramLabel = "N",

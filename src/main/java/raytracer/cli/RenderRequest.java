@@ -7,7 +7,8 @@ import raytracer.api.SceneOptions;
  * The command's options, checked and parsed: everything a {@link RenderRun} needs to know.
  *
  * @param scene the scene file, or null for the embedded default scene
- * @param output the image file, known to be writable; of an animation, the first frame's
+ * @param output the image file, known to be writable; of an animation, the first frame's (the
+ * frames' files are checked by {@link FrameOutputs} once the scene is read)
  * @param options what changes the scene, and its search and mesh cache, as {@link raytracer.api.Scene} applies them
  * @param show true for --show: a window shows the image as it renders (a display is known to be there)
  * @param frames the frames of the animation to render, or null for a still (frame 0)

@@ -55,21 +55,31 @@ final class RenderRun {
             Scene scene = workers.call(() -> Scene.open(request.scene(), request.options()));
             long readNanos = System.nanoTime() - readStart;
             FrameRange range = request.frames() == null ? new FrameRange(0, 0) : request.frames();
+            FrameOutputs outputs = null;
             if (request.frames() != null) {
                 String why = range.whyNotIn(scene.file().frames(), scene.file().animated());
                 if (why != null) {
                     throw new ParameterException(commandLine, "--frames " + range.first() + "-" + range.last() + ": " + why);
                 }
+                outputs = FrameOutputs.plan(commandLine, request.framePattern(), range, request.resume(), scene.image().width(),
+                                            scene.image().height());
             }
+            List<Integer> frames = outputs == null ? List.of(0) : outputs.frames();
             long start = System.nanoTime();
             int rendered = 0;
             try {
-                for (int frame = range.first(); frame <= range.last(); frame++) {
-                    Path out = request.output(frame);
-                    if (request.resume() && FrameFiles.complete(out)) {
-                        continue;
+                for (int frame : frames) {
+                    current = request.output(frame);
+                    SceneFrame loaded = scene.load(frame, workers);
+                    if (outputs != null && rendered == 0) {
+                        // the first frame loaded names the inputs: the run is accepted, or refused before anything is made
+                        outputs.checkNotInputs(request.scene(), loaded.report().inputs());
+                        outputs.prepare();
+                        // printed even with --quiet: a file that was there is replaced
+                        report.warnings(outputs.redone());
                     }
-                    renderFrame(scene, frame, out, workers, rendered == 0 ? readNanos : 0, frame == range.last());
+                    renderFrame(loaded, frame, request.output(frame), workers, rendered == 0 ? readNanos : 0,
+                                rendered == frames.size() - 1);
                     rendered++;
                 }
                 if (window != null) {
@@ -88,12 +98,10 @@ final class RenderRun {
     }
 
     /**
-     * Loads, prepares, renders and writes frame {@code frame} of {@code scene} to {@code out};
+     * Prepares, renders and writes frame {@code frame}, {@code loaded}, to {@code out};
      * {@code readNanos} is the time reading the file took, counted in the first frame's load.
      */
-    private void renderFrame(Scene scene, int frame, Path out, Workers workers, long readNanos, boolean last) throws Exception {
-        current = out;
-        SceneFrame loaded = scene.load(frame, workers);
+    private void renderFrame(SceneFrame loaded, int frame, Path out, Workers workers, long readNanos, boolean last) throws Exception {
         String input = OutputFile.whyInput(out, request.scene(), loaded.report().inputs());
         if (input != null) {
             // found after loading, which names the inputs, and before rendering

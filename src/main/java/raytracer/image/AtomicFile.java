@@ -3,21 +3,33 @@ package raytracer.image;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.AccessDeniedException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFileAttributeView;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Writes a file through a temporary sibling and a rename, so readers see either the old file or the
  * complete new one, never a half-written one. If the program is stopped mid-write,
- * {@link PartialFiles} deletes the temporary file.
+ * {@link PartialFiles} deletes the temporary file; one that a killed program left,
+ * {@link #removeLeftovers} deletes when the file is written again.
  *
  * <p>Two kinds of file are written so. A file the user named ({@link #write}) is never destroyed:
  * a symbolic link is written through to its target (one to nothing is refused), a FIFO or a
@@ -126,8 +138,7 @@ public final class AtomicFile {
         try {
             OutputStream stream = null;
             while (stream == null) {
-                temp = dir.resolve("." + absolute.getFileName() + "."
-                        + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + ".partial");
+                temp = dir.resolve(temporaryName(absolute.getFileName().toString(), ThreadLocalRandom.current().nextLong()));
                 try {
                     stream = PartialFiles.create(temp);
                 } catch (FileAlreadyExistsException taken) {
@@ -151,6 +162,46 @@ public final class AtomicFile {
                 PartialFiles.done(temp);
             }
         }
+    }
+
+    /** {@link #temporaryName}'s names: the file's name, and at most 13 base-36 digits (an unsigned long's). */
+    private static final Pattern TEMPORARY = Pattern.compile("\\.(.+)\\.[0-9a-z]{1,13}\\.partial");
+
+    /** The name of a temporary file of a write of the file {@code name}: {@code .NAME.<random in base 36>.partial}. */
+    private static String temporaryName(String name, long random) {
+        return "." + name + "." + Long.toUnsignedString(random, 36) + ".partial";
+    }
+
+    /**
+     * Deletes the temporary files that writes of {@code targets} left when the program was killed
+     * mid-write (SIGKILL, a power cut: no shutdown hook ran, see {@link PartialFiles}): the regular
+     * files beside each file written (the end of its links) whose names are {@link #temporaryName}'s
+     * for it, and nothing else. A write of one of them running in another process at that moment
+     * would lose its temporary file and fail: call it for files about to be written by this program
+     * alone. Each folder is listed once, however many targets it holds. Returns the files deleted.
+     */
+    public static List<Path> removeLeftovers(Collection<Path> targets) throws IOException {
+        Map<Path, Set<String>> names = new LinkedHashMap<>();
+        for (Path target : targets) {
+            Path file = destination(target);
+            names.computeIfAbsent(file.getParent(), d -> new HashSet<>()).add(file.getFileName().toString());
+        }
+        List<Path> removed = new ArrayList<>();
+        for (Map.Entry<Path, Set<String>> folder : names.entrySet()) {
+            if (!Files.isDirectory(folder.getKey())) {
+                continue;
+            }
+            try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder.getKey())) {
+                for (Path entry : entries) {
+                    Matcher m = TEMPORARY.matcher(entry.getFileName().toString());
+                    if (m.matches() && folder.getValue().contains(m.group(1)) && Files.isRegularFile(entry, LinkOption.NOFOLLOW_LINKS)
+                        && Files.deleteIfExists(entry)) {
+                        removed.add(entry);
+                    }
+                }
+            }
+        }
+        return removed;
     }
 
     private static void keepPermissionsOf(Path replaced, Path temp) throws IOException {

@@ -244,6 +244,43 @@ class ConvergeCommandTest {
                       1, "no closed form: the camera must be orthographic");
     }
 
+    /**
+     * An animated scene converges frame 0, as render renders it without --frames, and says so;
+     * --frame N converges another (its reference is that frame's image), and a frame the scene
+     * does not have is one line.
+     */
+    @Test
+    void anAnimatedSceneConvergesFrameZeroOrTheFrameAsked() throws IOException {
+        // the sphere off the axis of the orbit: each frame sees it elsewhere
+        Path scene = write("turn.yaml", SPHERES.replace("center: [0, 0.7, 0]", "center: [1, 0.7, 0]") + """
+            animation:
+              frames: 4
+              camera: {orbit: {center: [0, 0.5, 0], degrees: 120}}
+            """);
+        Result zero = converge(scene.toString(), "--spp", "1", "--reference-spp", "4", "--no-cache", "--plot",
+                               dir.resolve("z.png").toString());
+        assertEquals(0, zero.code(), zero.err());
+        assertTrue(zero.err().contains("converge: the scene is animated; converging frame 0 of its 4 (--frame N picks another)"),
+                   zero.err());
+        Path ref = dir.resolve("ref-%d.pfm");
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "3", "--spp", "64", "-o", ref.toString(), "-q").code());
+        double[] error = new double[2];
+        for (int i = 0; i < 2; i++) {
+            Path csv = dir.resolve(i + ".csv");
+            Result r = converge(scene.toString(), "--frame", i == 0 ? "3" : "0", "--spp", "16", "--reference",
+                                dir.resolve("ref-3.pfm").toString(), "-q", "--csv", csv.toString(), "--plot",
+                                dir.resolve(i + ".png").toString());
+            assertEquals(0, r.code(), r.err());
+            error[i] = Double.parseDouble(rows(csv).get(0)[5]);
+        }
+        assertTrue(error[0] < error[1] / 2, "frame 3 against its own image " + error[0] + ", frame 0 against it " + error[1]);
+        assertOneLine(converge(scene.toString(), "--frame", "4"), 2, "--frame 4: the scene's animation has 4 frames, 0 to 3");
+        assertOneLine(converge(write("still.yaml", SPHERES).toString(), "--frame", "1"), 2,
+                      "--frame 1: the scene has no animation section (a still is frame 0)");
+        assertOneLine(converge(scene.toString(), "--reference", "closed-form", "-q", "--plot", dir.resolve("c.png").toString()), 1,
+                      "no closed form: the scene is animated");
+    }
+
     @Test
     void theSrgbMetricMeasuresTheDisplayedValues() throws IOException {
         // the same renders measured both ways: the sRGB curve stretches the dark values, so the

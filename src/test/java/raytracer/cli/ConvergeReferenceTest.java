@@ -28,7 +28,7 @@ class ConvergeReferenceTest {
         World world = scene.world();
         world.setViewPlane(world.viewPlane().withResolution(24, 24));
         world.prepare();
-        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), scene, 128, 5, null,
+        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), 0, scene, 128, 5, null,
             (s, film, seed, label) -> Renders.render(s.world(), s.rayTree(), 2, seed, film), new PrintWriter(new StringWriter()));
         var exact = ConvergeReference.closedForm(file, 24, 24, new PrintWriter(new StringWriter()), true).get();
         double trueRmse = ErrorMetrics.compare(ref.film(), 1, exact.film()).rmse();

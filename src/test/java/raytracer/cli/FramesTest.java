@@ -7,12 +7,19 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.util.Arrays;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.image.Film;
+import raytracer.image.ImageCheck;
+import raytracer.image.ImageWriters;
 import raytracer.math.Matrix4;
 import raytracer.math.Point3D;
 
@@ -111,8 +118,166 @@ class FramesTest {
         assertTrue(r.err().contains("3 rendered, 1 already complete (--resume)"), r.err());
         assertEquals(old, Files.getLastModifiedTime(dir.resolve("r-0.png")), "a complete frame is not rendered again");
         assertArrayEquals(whole, Files.readAllBytes(dir.resolve("r-1.png")), "a frame cut short is");
-        assertTrue(FrameFiles.complete(dir.resolve("r-3.png")));
+        assertNull(ImageCheck.whyNotWhole(dir.resolve("r-3.png"), 24, 16));
         assertTrue(Files.list(dir).noneMatch(p -> p.getFileName().toString().contains("partial")));
+    }
+
+    /**
+     * A frame is kept only when the whole file is an image of the run's size: a flipped byte (which
+     * breaks its chunk's CRC), a stub of the signature and the end chunk, and an image of another
+     * size are each rendered again, with a warning naming the file and why.
+     */
+    @Test
+    void resumeRendersDamagedStubAndWrongSizedFramesAgain() throws IOException {
+        Path scene = animated();
+        String pattern = dir.resolve("d-%d.png").toString();
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "-q").code());
+        byte[][] whole = new byte[4][];
+        for (int f = 0; f < 4; f++) {
+            whole[f] = Files.readAllBytes(dir.resolve("d-" + f + ".png"));
+        }
+        byte[] flipped = whole[1].clone();
+        int idat = indexOf(flipped, "IDAT".getBytes(StandardCharsets.US_ASCII));
+        flipped[idat + 6] ^= 0x10;
+        Files.write(dir.resolve("d-1.png"), flipped);
+        byte[] stub = new byte[20];
+        System.arraycopy(whole[2], 0, stub, 0, 8);
+        System.arraycopy(whole[2], whole[2].length - 12, stub, 8, 12);
+        Files.write(dir.resolve("d-2.png"), stub);
+        ImageWriters.write(new Film(8, 6), 1, dir.resolve("d-3.png"));
+        RenderCommandTest.Result r = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "--resume");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains("3 rendered, 1 already complete (--resume)"), r.err());
+        assertTrue(r.err().contains("render: warning: " + dir.resolve("d-1.png") + " is damaged (chunk IDAT's CRC does not match); "
+                                    + "rendered again"), r.err());
+        assertTrue(r.err().contains("render: warning: " + dir.resolve("d-2.png") + " is "), r.err());
+        assertTrue(r.err().contains("render: warning: " + dir.resolve("d-3.png") + " is 8x6, not 24x16; rendered again"), r.err());
+        for (int f = 1; f < 4; f++) {
+            assertArrayEquals(whole[f], Files.readAllBytes(dir.resolve("d-" + f + ".png")), "frame " + f);
+        }
+    }
+
+    /** The same for PFM frames: a header that is not one, bytes past the pixels, a value that is not finite. */
+    @Test
+    void resumeChecksAPfmFrameWhole() throws IOException {
+        Path scene = animated();
+        String pattern = dir.resolve("p-%d.pfm").toString();
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "-q").code());
+        byte[] good = Files.readAllBytes(dir.resolve("p-1.pfm"));
+        byte[] longer = Arrays.copyOf(good, good.length + 12);
+        Files.write(dir.resolve("p-1.pfm"), longer);
+        byte[] nan = good.clone();
+        ByteBuffer.wrap(nan).order(ByteOrder.LITTLE_ENDIAN).putFloat(nan.length - 12 * 5, Float.NaN);
+        Files.write(dir.resolve("p-2.pfm"), nan);
+        Files.write(dir.resolve("p-3.pfm"), "PF\n24 16\n-1.0\n".getBytes(StandardCharsets.US_ASCII));
+        RenderCommandTest.Result r = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "--resume", "-q");
+        assertEquals(0, r.code(), r.err());
+        assertTrue(r.err().contains(dir.resolve("p-1.pfm") + " is damaged ("), r.err());
+        assertTrue(r.err().contains(dir.resolve("p-2.pfm") + " is damaged (pixel "), r.err());
+        assertTrue(r.err().contains(dir.resolve("p-3.pfm") + " is cut short"), r.err());
+        assertEquals(3, r.lines().length, "a warning a frame, even with --quiet: " + r.err());
+        assertArrayEquals(good, Files.readAllBytes(dir.resolve("p-1.pfm")));
+    }
+
+    private static int indexOf(byte[] bytes, byte[] part) {
+        for (int i = 0; i + part.length <= bytes.length; i++) {
+            if (Arrays.equals(bytes, i, i + part.length, part, 0, part.length)) {
+                return i;
+            }
+        }
+        throw new AssertionError("not found");
+    }
+
+    /** A folder a frame: each frame's folder is made before the first frame renders. */
+    @Test
+    void aFolderForEachFrameIsMade() throws IOException {
+        String pattern = dir.resolve("shot-%d").resolve("frame.png").toString();
+        RenderCommandTest.Result r = RenderCommandTest.run(animated().toString(), "--frames", "0-2", "-o", pattern, "-q");
+        assertEquals(0, r.code(), r.err());
+        for (int f = 0; f < 3; f++) {
+            assertTrue(Files.isRegularFile(dir.resolve("shot-" + f).resolve("frame.png")), "frame " + f);
+        }
+    }
+
+    /** A later frame's output that cannot be written (a folder, an input of the scene) refuses the run before any frame is written. */
+    @Test
+    void everyFramesOutputIsCheckedBeforeTheFirstRenders() throws IOException {
+        Path scene = animated();
+        Files.createDirectories(dir.resolve("g-2.png"));
+        RenderCommandTest.Result r = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", dir.resolve("g-%d.png").toString());
+        assertError(r, "cannot write " + dir.resolve("g-2.png") + ": it is a directory");
+        assertFalse(Files.exists(dir.resolve("g-0.png")), "nothing written");
+        ImageWriters.write(new Film(2, 2), 1, dir.resolve("t-1.png"));
+        byte[] texture = Files.readAllBytes(dir.resolve("t-1.png"));
+        Path textured = scene("tex.yaml", Files.readString(scene).replace("materials:", """
+            materials:
+              wood: {type: matte, texture: {type: image, file: t-1.png}}""")
+            .replace("max: [-1.5, 1, -1.5]}", "max: [-1.5, 1, -1.5], material: wood}"));
+        r = RenderCommandTest.run(textured.toString(), "--frames", "0-1", "-o", dir.resolve("t-%d.png").toString());
+        assertError(r, "cannot write " + dir.resolve("t-1.png") + ": it is one of the scene's inputs");
+        assertFalse(Files.exists(dir.resolve("t-0.png")), "nothing written");
+        assertArrayEquals(texture, Files.readAllBytes(dir.resolve("t-1.png")));
+        Files.writeString(dir.resolve("file"), "a file, not a folder");
+        r = RenderCommandTest.run(scene.toString(), "--frames", "0-1", "-o", dir.resolve("file/sub/f-%d.png").toString());
+        assertError(r, "cannot write " + dir.resolve("file/sub/f-0.png") + ": ");
+        assertTrue(r.err().contains(dir.resolve("file") + " is a regular file, not a folder"), r.err());
+    }
+
+    /**
+     * A run killed mid-write leaves its temporary file; a frames run removes those of the frames it
+     * writes, named as the atomic write names them, and nothing else.
+     */
+    @Test
+    void staleTemporaryFilesOfTheFramesWrittenAreRemoved() throws IOException {
+        Path scene = animated();
+        String pattern = dir.resolve("s-%d.pfm").toString();
+        assertEquals(0, RenderCommandTest.run(scene.toString(), "--frames", "0", "-o", pattern, "-q").code());
+        List<String> stale = List.of(".s-1.pfm.3kq9zx1m0a.partial", ".s-2.pfm.0.partial", ".s-3.pfm.3w5e11264sgsf.partial");
+        List<String> kept = List.of(".s-0.pfm.abc.partial", ".s-1.pfm.ABC.partial", ".s-1.pfm.abc.partial.bak", "s-1.pfm.abc.partial",
+                                    ".s-10.pfm.abc.partial", ".s-1.pfm.local-1-e4f.partial", ".s-1.pfm.3w5e11264sgsfa.partial",
+                                    ".s-1.pfm..partial", "other.txt");
+        for (String name : stale) {
+            Files.writeString(dir.resolve(name), "PF");
+        }
+        for (String name : kept) {
+            Files.writeString(dir.resolve(name), "PF");
+        }
+        Files.createDirectories(dir.resolve(".s-2.pfm.dir.partial"));
+        RenderCommandTest.Result r = RenderCommandTest.run(scene.toString(), "--frames", "0-3", "-o", pattern, "--resume", "-q");
+        assertEquals(0, r.code(), r.err());
+        for (String name : stale) {
+            assertFalse(Files.exists(dir.resolve(name)), name);
+        }
+        for (String name : kept) {
+            assertTrue(Files.exists(dir.resolve(name)), name);
+        }
+        assertTrue(Files.isDirectory(dir.resolve(".s-2.pfm.dir.partial")), "only files are removed");
+    }
+
+    /** Nothing is made, no folder and no file, before the run is accepted: options, scene, and every frame's output. */
+    @Test
+    void aRefusedRunCreatesNothing() throws IOException {
+        Path scene = animated();
+        Path folder = dir.resolve("new");
+        assertError(RenderCommandTest.run(scene.toString(), "--frames", "2-9", "-o", folder.resolve("deep/f-%d.png").toString()),
+                    "--frames 2-9");
+        assertFalse(Files.exists(folder), "a range the scene does not have");
+        Path broken = scene("broken.yaml", "image: {width: 0}\n");
+        RenderCommandTest.Result r = RenderCommandTest.run(broken.toString(), "--frames", "0-1", "-o",
+                                                           folder.resolve("f-%d.png").toString());
+        assertEquals(1, r.code(), r.err());
+        assertFalse(Files.exists(folder), "a scene that does not read");
+        // frame 0's folder is missing, frame 1's output is a folder
+        Files.createDirectories(dir.resolve("shots/1/f.png"));
+        r = RenderCommandTest.run(scene.toString(), "--frames", "0-1", "-o", dir.resolve("shots/%d/f.png").toString());
+        assertError(r, "cannot write " + dir.resolve("shots/1/f.png") + ": it is a directory");
+        assertFalse(Files.exists(dir.resolve("shots/0")), "a later frame's output that cannot be written");
+        r = RenderCommandTest.run(broken.toString(), "-o", folder.resolve("still.png").toString());
+        assertEquals(ErrorReport.BAD_USAGE, r.code(), r.err());
+        r = RenderCommandTest.run(broken.toString(), "-o", dir.resolve("still.png").toString());
+        assertEquals(1, r.code(), r.err());
+        assertFalse(Files.exists(folder), "a still's missing folder is an error, not made");
+        assertFalse(Files.exists(dir.resolve("still.png")), "a still whose scene does not read");
     }
 
     @Test

@@ -41,6 +41,32 @@ class AtomicFileTest {
         assertEquals("cannot write " + target + ": no such file or directory", e.getMessage());
     }
 
+    /**
+     * A leftover is a temporary file of a write of the file named: beside the file written (a
+     * link's target), named as the write names its temporary files; a temporary file a write makes
+     * is one by that rule, and nothing else is removed.
+     */
+    @Test
+    void leftoversAreTheTemporaryFilesOfTheFilesNamedAndNothingElse() throws IOException {
+        Path frames = Files.createDirectories(dir.resolve("frames"));
+        Path link = Files.createSymbolicLink(dir.resolve("a.png"), frames.resolve("b.png"));
+        Path[] temporary = new Path[1];
+        AtomicFile.write(link, out -> {
+            try (var files = Files.list(frames)) {
+                temporary[0] = files.filter(p -> !p.getFileName().toString().equals("b.png")).findFirst().orElseThrow();
+            }
+            out.write(1);
+        });
+        // the same name again, as a write killed before its rename leaves it
+        Files.writeString(temporary[0], "left");
+        Files.writeString(dir.resolve(".a.png.k3xq0.partial"), "beside the link, not the file written");
+        Files.writeString(frames.resolve(".b.png.k3xq0.partial.old"), "another name");
+        assertEquals(java.util.List.of(temporary[0]), AtomicFile.removeLeftovers(Set.of(link)));
+        assertTrue(Files.exists(dir.resolve(".a.png.k3xq0.partial")));
+        assertTrue(Files.exists(frames.resolve(".b.png.k3xq0.partial.old")));
+        assertTrue(Files.exists(frames.resolve("b.png")));
+    }
+
     @Test
     void aSuccessfulWriteReplacesTheFile() throws IOException {
         Path target = dir.resolve("image.png");

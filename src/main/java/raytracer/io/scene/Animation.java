@@ -25,6 +25,25 @@ import raytracer.math.Point3D;
 final class Animation {
     static final int MAX_FRAMES = 1_000_000;
     static final double DEFAULT_FPS = 24;
+    /**
+     * The rates allowed: a frame every million seconds of the scene's time (11.6 days: a time-lapse
+     * of years) to a million frames a second. Far outside them a key's time x fps overflows to an
+     * infinite frame or, near the smallest doubles, stops telling keys apart.
+     */
+    static final double MIN_FPS = 1e-6;
+    static final double MAX_FPS = 1e6;
+    /**
+     * The farthest frame a key may be at, either way: keys may lie outside the frames, but a frame
+     * number fits an int; past it the span between two keys can overflow to infinity, which makes
+     * every value between them NaN.
+     */
+    static final double MAX_KEY_FRAME = Integer.MAX_VALUE;
+    /**
+     * The largest sweep of an orbit either way: a turn a frame over the longest animation. Far past
+     * it a frame's angle, degrees x frame / frames, loses its precision (at 1e20 degrees a double
+     * steps by 16384 of them), and at 1e308 it overflows, which made the eye NaN.
+     */
+    static final double MAX_ORBIT_DEGREES = 360.0 * MAX_FRAMES;
     private static final Set<String> KEYS = Set.of("frames", "fps", "camera", "objects");
     private static final Set<String> CAMERA_CHANNELS = Set.of("eye", "look-at", "up", "fov");
     private static final Set<String> OBJECT_CHANNELS = Set.of("translate", "rotate-x", "rotate-y", "rotate-z", "scale");
@@ -36,6 +55,8 @@ final class Animation {
     private final Map<String, Track> camera;
     /** The orbit's centre (null: around the camera's look-at) and sweep in degrees, or null for keys. */
     private final Point3D orbitCenter;
+    /** The node of the orbit's centre (or of the orbit), for a message about the eye it turns. */
+    private final Node orbitNode;
     private final double orbitDegrees;
     private final boolean orbit;
     /** Per object name, its channels' tracks, and the node of its motion for messages. */
@@ -43,13 +64,14 @@ final class Animation {
     private final Map<String, Node> objectNodes;
 
     private Animation(int frames, double fps, Node cameraNode, Map<String, Track> camera, boolean orbit, Point3D orbitCenter,
-                      double orbitDegrees, Map<String, Map<String, Track>> objects, Map<String, Node> objectNodes) {
+                      Node orbitNode, double orbitDegrees, Map<String, Map<String, Track>> objects, Map<String, Node> objectNodes) {
         this.frames = frames;
         this.fps = fps;
         this.cameraNode = cameraNode;
         this.camera = camera;
         this.orbit = orbit;
         this.orbitCenter = orbitCenter;
+        this.orbitNode = orbitNode;
         this.orbitDegrees = orbitDegrees;
         this.objects = objects;
         this.objectNodes = objectNodes;
@@ -92,6 +114,10 @@ final class Animation {
             Point3D turned = Matrix4.translate(center.x(), center.y(), center.z())
                 .multiply(Matrix4.rotateY(orbitDegrees * frame / frames))
                 .multiply(Matrix4.translate(-center.x(), -center.y(), -center.z())).transform(eye);
+            if (!(Double.isFinite(turned.x()) && Double.isFinite(turned.y()) && Double.isFinite(turned.z()))) {
+                throw source.error(orbitNode, "the orbit turns the eye past the largest double at frame " + frame + ": the eye "
+                                   + eye + " and the centre " + center + " must lie nearer each other and the origin");
+            }
             values.put("eye", new double[] {turned.x(), turned.y(), turned.z()});
         }
         camera.forEach((channel, track) -> values.put(channel, track.at(frame)));
@@ -141,9 +167,14 @@ final class Animation {
             throw source.error(node, "animation needs the key 'frames' (how many frames, numbered from 0)");
         }
         double fps = a.number("fps", DEFAULT_FPS, 0, true);
+        if (fps < MIN_FPS || fps > MAX_FPS) {
+            throw source.error(a.raw("fps"), "'fps' in animation must be " + YamlObject.format(MIN_FPS) + " to "
+                               + YamlObject.format(MAX_FPS) + " (frames a second of the scene's time), got " + YamlObject.format(fps));
+        }
         Map<String, Track> camera = new LinkedHashMap<>();
         boolean orbit = false;
         Point3D center = null;
+        Node orbitNode = null;
         double degrees = 360;
         if (a.has("camera")) {
             YamlObject c = new YamlObject(source, a.raw("camera"), "the animation's camera", Set.of("keys", "interpolation", "orbit"));
@@ -157,7 +188,13 @@ final class Animation {
                 YamlObject o = new YamlObject(source, c.raw("orbit"), "orbit", Set.of("center", "degrees"));
                 orbit = true;
                 center = o.point("center", null);
+                orbitNode = o.has("center") ? o.raw("center") : c.raw("orbit");
                 degrees = o.number("degrees", 360);
+                if (Math.abs(degrees) > MAX_ORBIT_DEGREES) {
+                    throw source.error(o.raw("degrees"), "'degrees' in orbit must be " + YamlObject.format(-MAX_ORBIT_DEGREES) + " to "
+                                       + YamlObject.format(MAX_ORBIT_DEGREES) + " (a turn a frame over " + MAX_FRAMES
+                                       + " frames, the most an animation has), got " + YamlObject.format(degrees));
+                }
             } else {
                 camera = tracks(source, c, frames, fps, CAMERA_CHANNELS, "camera key");
                 if (orthographic && camera.containsKey("fov")) {
@@ -180,8 +217,8 @@ final class Animation {
                 objectNodes.put(name, entry.getValue());
             }
         }
-        return new Animation(frames, fps, a.has("camera") ? a.raw("camera") : node, camera, orbit, center, degrees, objects,
-                             objectNodes);
+        return new Animation(frames, fps, a.has("camera") ? a.raw("camera") : node, camera, orbit, center, orbitNode, degrees,
+                             objects, objectNodes);
     }
 
     /** The tracks of a motion's {@code keys}: one per channel that some key gives, through the keys that give it. */
@@ -206,7 +243,7 @@ final class Animation {
             if (key.has("frame") == key.has("time")) {
                 throw source.error(keyNode, what + " needs either 'frame' (0 to " + (frames - 1) + ") or 'time' (seconds)");
             }
-            double frame = key.has("frame") ? key.requiredNumber("frame") : key.requiredNumber("time") * fps;
+            double frame = key.has("frame") ? keyFrame(source, key) : keyTime(source, key, fps);
             if (!(frame > previous)) {
                 throw source.error(key.has("frame") ? key.raw("frame") : key.raw("time"), "keys must be in order of time, "
                                    + "each after the one before");
@@ -225,6 +262,36 @@ final class Animation {
             tracks.put(channel, new Track(t, values.get(channel).toArray(new double[0][]), interpolation.equals("smooth")));
         }
         return tracks;
+    }
+
+    /** A key's {@code frame}, within {@link #MAX_KEY_FRAME} either way. */
+    private static double keyFrame(Source source, YamlObject key) throws SceneException {
+        double frame = key.requiredNumber("frame");
+        if (Math.abs(frame) > MAX_KEY_FRAME) {
+            throw source.error(key.raw("frame"), "'frame' in " + key.what() + " must be " + YamlObject.format(-MAX_KEY_FRAME) + " to "
+                               + YamlObject.format(MAX_KEY_FRAME) + ", got " + YamlObject.format(frame));
+        }
+        return frame;
+    }
+
+    /** The frame of a key's {@code time} in seconds at {@code fps}: time x fps, within {@link #MAX_KEY_FRAME} either way. */
+    private static double keyTime(Source source, YamlObject key, double fps) throws SceneException {
+        double time = key.requiredNumber("time");
+        if (!(Math.abs(time * fps) <= MAX_KEY_FRAME)) {
+            String most = seconds(MAX_KEY_FRAME / fps);
+            throw source.error(key.raw("time"), "'time' in " + key.what() + " must be -" + most + " to " + most + " seconds at "
+                               + YamlObject.format(fps) + " fps (frames " + YamlObject.format(-MAX_KEY_FRAME) + " to "
+                               + YamlObject.format(MAX_KEY_FRAME) + "), got " + YamlObject.format(time));
+        }
+        return time * fps;
+    }
+
+    /**
+     * A bound in seconds (at least 2147: fps is at most {@link #MAX_FPS}) to the hundredth, rounded
+     * towards zero, so that a time within the bound printed is allowed.
+     */
+    private static String seconds(double s) {
+        return String.format(java.util.Locale.ROOT, "%.2f", Math.floor(s * 100) / 100);
     }
 
     /** A channel's value at a key: a triple, or a number; a scale may be either (a number scales evenly). */

@@ -36,7 +36,10 @@ public final class ClosedFormReader {
     private static LitPlane read(Source source, String text) throws SceneException {
         ViewPlane vp = SceneLoader.load(source, text, OptionalInt.empty(), null).world().viewPlane();
         Node root = SceneLoader.root(source, text);
-        YamlObject scene = new YamlObject(source, root, "the scene", SceneLoader.SECTIONS);
+        YamlObject scene = new YamlObject(source, root, "the scene", SceneLoader.FILE_SECTIONS);
+        if (scene.has("animation")) {
+            throw refuse(source, scene.raw("animation"), "the scene is animated (an exact image is of a still scene)");
+        }
         String pass = scene.string("pass", "full");
         if (!pass.equals("full") && !pass.equals("direct")) {
             throw refuse(source, scene.raw("pass"), "the pass must be full or direct, not " + pass);

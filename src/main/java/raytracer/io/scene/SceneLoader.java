@@ -93,7 +93,12 @@ public final class SceneLoader {
      * per shaded point instead of its {@code samples} key (the convergence benchmark's override).
      */
     public static LoadedScene load(Path file, OptionalInt areaLightSamples) throws SceneException {
-        return withInput(load(source(file), text(file), areaLightSamples, null), file);
+        return load(file, areaLightSamples, 0);
+    }
+
+    /** As {@link #load(Path, OptionalInt)}, frame {@code frame} of an animated scene (0 to its frames - 1). */
+    public static LoadedScene load(Path file, OptionalInt areaLightSamples, int frame) throws SceneException {
+        return withInput(SceneFile.of(source(file), text(file), areaLightSamples, null).load(frame), file);
     }
 
     private static LoadedScene withInput(LoadedScene loaded, Path file) {

@@ -226,6 +226,39 @@ class AnimationTest {
                                                 + "(the camera at frame 3)"), camera.getMessage());
     }
 
+    /**
+     * Numbers past what a frame can use name their key and the range allowed, rather than turning
+     * into an infinite frame or a camera whose eye is not a number: the orbit's sweep, a key's
+     * frame or time (the frame number fits an int), and an orbit whose eye is turned past the
+     * largest double.
+     */
+    @Test
+    void hostileNumbersNameTheirKeyAndTheRangeAllowed() throws Exception {
+        assertMessage("""
+            animation: {frames: 4, camera: {orbit: {degrees: 1e308}}}
+            """, "a.yaml:8:50: 'degrees' in orbit must be -360000000 to 360000000 (a turn a frame over 1000000 frames, the most "
+                 + "an animation has), got 1.0E308");
+        assertMessage("""
+            animation: {frames: 4, camera: {keys: [{time: 0, fov: 30}, {time: 1e308, fov: 50}]}}
+            """, "a.yaml:8:67: 'time' in camera key must be -89478485.29 to 89478485.29 seconds at 24 fps (frames "
+                 + "-2147483647 to 2147483647), got 1.0E308");
+        assertMessage("""
+            animation: {frames: 4, fps: 1e6, objects: {crate: {keys: [{time: 1e4, scale: 2}]}}}
+            """, "'time' in key of object 'crate' must be -2147.48 to 2147.48 seconds at 1000000 fps");
+        assertMessage("""
+            animation: {frames: 4, fps: 1e308}
+            """, "a.yaml:8:29: 'fps' in animation must be 1.0E-6 to 1000000 (frames a second of the scene's time), got 1.0E308");
+        assertMessage("""
+            animation: {frames: 4, camera: {keys: [{frame: -1e308, fov: 30}, {frame: 1e308, fov: 50}]}}
+            """, "a.yaml:8:48: 'frame' in camera key must be -2147483647 to 2147483647, got -1.0E308");
+        SceneFile far = scene("""
+            animation: {frames: 4, camera: {orbit: {center: [1e308, 0, 0]}}}
+            """);
+        far.load(0);
+        SceneException e = assertThrows(SceneException.class, () -> far.load(2));
+        assertTrue(e.getMessage().contains("a.yaml:8:49: the orbit turns the eye past the largest double at frame 2"), e.getMessage());
+    }
+
     private void assertMessage(String animation, String expected) throws IOException {
         SceneException e = assertThrows(SceneException.class, () -> scene(animation));
         assertTrue(e.getMessage().startsWith(dir.resolve("a.yaml").toString()) && e.getMessage().contains(expected), e.getMessage());
