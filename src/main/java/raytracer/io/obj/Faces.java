@@ -9,7 +9,8 @@ import raytracer.shapes.mesh.Growing;
  * The faces of an OBJ file as corner triples (v, vt, vn) of triangles: each face's indices
  * resolved against what was defined before its line, then fan-triangulated, (0, i, i + 1), whatever
  * its number of corners. A vertex that does not exist stops the load; a texture coordinate or
- * normal that does not exist is dropped from its face, with one warning a file.
+ * normal that does not exist is dropped from its face, with one warning a file, and a face of
+ * fewer than three corners is skipped, with one warning a file too.
  */
 final class Faces {
     /**
@@ -96,15 +97,18 @@ final class Faces {
             end = corner.end();
         }
         // a syntax error anywhere on the line is reported before a vertex index out of range
-        if (faceV.size == 0 || !faceEnd.reset(text).region(end, lineEnd).matches()) {
+        if (!faceEnd.reset(text).region(end, lineEnd).matches()) {
             throw error("expected " + FORMS + ", got '" + FileWarnings.shown(text.subSequence(lineStart, lineEnd).toString(), 60) + "'");
-        }
-        int count = faceV.size;
-        if (count < 3) {
-            throw error("a face needs at least 3 vertices, got " + count);
         }
         if (badVertex != null) {
             throw error(badVertex);
+        }
+        int count = faceV.size;
+        if (count < 3) {
+            // no triangle: tinyobjloader skips such a face with a warning ("Degenerated face found")
+            warnings.tally("degenerate", lineNumber, n -> "a face of " + count + (count == 1 ? " corner" : " corners")
+                + " has no triangle; " + n + (n == 1 ? " face" : " faces") + " of fewer than 3 corners skipped");
+            return 0;
         }
         if (present(faceVt, missingVt, "texture coordinate", uvs) && cornerVt == null) {
             cornerVt = new Growing.Ints();

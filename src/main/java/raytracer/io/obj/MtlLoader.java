@@ -113,7 +113,7 @@ final class MtlLoader {
             }
             // d wins over Tr whatever their order: some exporters write Tr inverted
             case "Tr" -> m.dissolve = m.dissolveGiven ? m.dissolve : 1 - range.fraction(scalar(value, at, warn, 1 - m.dissolve));
-            case "Ni" -> m.ior = range.positive(scalar(value, at, warn, m.ior));
+            case "Ni" -> m.ior = range.ior(scalar(value, at, warn, m.ior), m.ior, warn);
             case "illum" -> m.illum = range.illum(scalar(value, at, warn, m.illum));
             case "map_Kd" -> m.mapKd = texture(file, TextureMap.parse(value), at, warn);
             case "map_Bump", "map_bump", "bump", "norm" -> {
@@ -129,8 +129,9 @@ final class MtlLoader {
 
     /**
      * The ranges of MTL values, as a scene's own materials have them: colours finite and not
-     * negative, an emission no brighter than an image holds, d and Tr fractions, Ni positive, illum
-     * one of the specification's models 0 to 10. A value out of range is an error at its line.
+     * negative, an emission no brighter than an image holds, d and Tr fractions, illum one of the
+     * specification's models 0 to 10. A value out of range is an error at its line; an Ni that is
+     * not positive and finite is a warning.
      */
     private record Range(Path file, int line, String key, String value) {
         /** The most a channel may emit: the image holds floats (as a scene's lights, YamlObject.MAX_EMISSION). */
@@ -166,11 +167,16 @@ final class MtlLoader {
             return v;
         }
 
-        double positive(double v) throws ObjException {
-            if (!(v > 0) || !Double.isFinite(v)) {
-                throw error("a finite number greater than 0", token(v));
+        /**
+         * Ni when it is an index of refraction, else {@code kept} with a warning: tinyobjloader
+         * takes any Ni unchecked, and a value only glass uses should not stop a render.
+         */
+        double ior(double v, double kept, FileWarnings warn) {
+            if (v > 0 && Double.isFinite(v)) {
+                return v;
             }
-            return v;
+            warn.add(line, key + " must be a finite number greater than 0, got " + token(v) + "; kept the default");
+            return kept;
         }
 
         double fraction(double v) throws ObjException {

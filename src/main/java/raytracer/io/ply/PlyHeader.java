@@ -5,12 +5,22 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Pattern;
 
 /**
  * A PLY header: the format and the elements, each with its count and typed properties, read from
- * the first line {@code ply} to {@code end_header}. Comments and obj_info lines are passed over.
+ * the first line {@code ply} to {@code end_header}. Comments, obj_info and blank lines are passed
+ * over anywhere. A line of another keyword is skipped with a warning: Blender 2.47 wrote its
+ * banner as a line of free text; trimesh reads past such lines and tinyply reports them and reads
+ * on (plyfile refuses them).
+ *
+ * @param lines the header's lines, end_header's included: the body's first line is the next
+ * @param skipped the first line skipped, as "header line N: unknown keyword 'K'", or null
  */
-record PlyHeader(Format format, List<Element> elements) {
+record PlyHeader(Format format, List<Element> elements, int lines, List<String> warnings, String skipped) {
+    /** What a keyword looks like; any other text of a skipped line is not shown. */
+    private static final Pattern KEYWORD = Pattern.compile("[A-Za-z_][A-Za-z0-9_]{0,31}");
+
     /** A header longer than this is not a PLY header (the Stanford files' are a few hundred bytes). */
     static final int MAX_BYTES = 1 << 20;
 
@@ -40,11 +50,13 @@ record PlyHeader(Format format, List<Element> elements) {
     /** Reads the header from {@code in}, leaving it at the first byte of the body. */
     static PlyHeader read(InputStream in, String file) throws IOException, PlyException {
         List<String> lines = lines(in, file);
-        if (lines.isEmpty() || !lines.get(0).equals("ply")) {
+        if (lines.isEmpty() || !isMagic(lines.get(0))) {
             throw new PlyException(file + ": not a PLY file (it must start with the line 'ply')");
         }
         Format format = null;
         List<Element> elements = new ArrayList<>();
+        String skipped = null;
+        int skippedLines = 0;
         for (int n = 1; n < lines.size(); n++) {
             String line = lines.get(n).trim();
             String[] w = line.split("\\s+");
@@ -89,14 +101,25 @@ record PlyHeader(Format format, List<Element> elements) {
                 }
                 case "end_header" -> {
                 }
-                default -> throw new PlyException(at + "unknown header keyword '" + shown(w[0])
-                                                  + "'; allowed: format, element, property, comment, obj_info, end_header");
+                default -> {
+                    if (skippedLines++ == 0) {
+                        skipped = "header line " + (n + 1) + (KEYWORD.matcher(w[0]).matches() ? ": unknown keyword '" + w[0] + "'"
+                                                                                            : ": no keyword");
+                    }
+                }
             }
         }
         if (format == null) {
             throw new PlyException(file + ": the header has no 'format' line");
         }
-        return new PlyHeader(format, elements);
+        List<String> warnings = skipped == null ? List.of()
+            : List.of(file + ": " + skipped + ", line skipped" + (skippedLines > 1 ? " (" + skippedLines + " such lines)" : ""));
+        return new PlyHeader(format, elements, lines.size(), warnings, skipped);
+    }
+
+    /** The first line: "ply", as trimesh and tinyply take it whatever its case and the white space around it. */
+    private static boolean isMagic(String line) {
+        return line.strip().equalsIgnoreCase("ply");
     }
 
     private static Property property(String[] w, String line, String at) throws PlyException {
@@ -141,7 +164,7 @@ record PlyHeader(Format format, List<Element> elements) {
                 if (text.trim().equals("end_header")) {
                     return lines;
                 }
-                if (lines.size() == 1 && !text.equals("ply")) {
+                if (lines.size() == 1 && !isMagic(text)) {
                     return lines; // not PLY: the caller says so
                 }
                 continue;
@@ -154,7 +177,7 @@ record PlyHeader(Format format, List<Element> elements) {
         if (lines.isEmpty() && length == 0) {
             throw new PlyException(file + ": the file is empty");
         }
-        if (lines.isEmpty() || !lines.get(0).equals("ply")) {
+        if (lines.isEmpty() || !isMagic(lines.get(0))) {
             lines.add(0, "");
             return lines;
         }

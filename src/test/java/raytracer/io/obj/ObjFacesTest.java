@@ -106,6 +106,28 @@ class ObjFacesTest {
                      + "1 face naming normals that do not exist is kept without them", m.warnings().get(1));
     }
 
+    /**
+     * A face of fewer than three corners has no triangle: tinyobjloader skips it with a warning
+     * ("Degenerated face found"), and so does this loader, once a file, with the count. Zero
+     * corners ("f" alone) is the same case. A file of nothing else has no faces.
+     */
+    @Test
+    void facesOfFewerThanThreeCornersAreSkippedWithOneWarning() throws Exception {
+        ObjModel m = load(TRIANGLE + "f 1 2 3\nf 1 2\nf 3\nf # none\nf 3 2 1\n");
+        assertArrayEquals(new int[] {0, 1, 2, 2, 1, 0}, m.mesh().triangles());
+        assertEquals(2, m.faces());
+        assertEquals(java.util.List.of(dir.resolve("m.obj") + ":5: a face of 2 corners has no triangle; "
+                                       + "3 faces of fewer than 3 corners skipped"), m.warnings());
+        ObjModel one = load(TRIANGLE + "f 1\nf 1 2 3\n");
+        assertEquals(java.util.List.of(dir.resolve("m.obj") + ":4: a face of 1 corner has no triangle; "
+                                       + "1 face of fewer than 3 corners skipped"), one.warnings());
+        assertEquals(dir.resolve("bad.obj") + ": no faces (an OBJ mesh needs 'f' lines)", error(TRIANGLE + "f 1 2\nf 2 3\n"));
+        assertEquals(error(TRIANGLE), error(TRIANGLE + "f 1 2\n"), "as a file without faces");
+        // a corner that does not parse is still an error, whatever the count
+        assertTrue(error(TRIANGLE + "f 1 x\n").contains(":4: expected 'f' and at least 3 corners"), error(TRIANGLE + "f 1 x\n"));
+        assertTrue(error(TRIANGLE + "f 1 9\n").contains(":4: vertex index 9 is out of range"), error(TRIANGLE + "f 1 9\n"));
+    }
+
     @Test
     void outOfRangeVerticesStillStopTheLoadWithTheIndexAsWritten() throws IOException {
         assertEquals(dir.resolve("bad.obj") + ":4: vertex index 99999999999 is out of range "

@@ -44,12 +44,28 @@ class ValueRangeTest {
         assertTrue(errorOfMtl("Ke 1e400").startsWith(at + "Ke must be 3 finite numbers of at least 0"), errorOfMtl("Ke 1e400"));
         assertEquals(at + "Ke must be at most 3.40282e+38 (the largest value an image holds), got 1e39",
                      errorOfMtl("Ke 1e39 0 0"));
-        assertEquals(at + "Ni must be a finite number greater than 0, got 1e400", errorOfMtl("Ni 1e400"));
-        assertEquals(at + "Ni must be a finite number greater than 0, got 0", errorOfMtl("Ni 0"));
         assertEquals(at + "Ns must be a finite number of at least 0, got -3", errorOfMtl("Ns -3"));
         assertEquals(at + "d must be a number from 0 to 1, got 2", errorOfMtl("d 2"));
         assertEquals(at + "Tr must be a number from 0 to 1, got -1", errorOfMtl("Tr -1"));
         assertEquals(at + "illum must be a whole number from 0 to 10, got 1e400", errorOfMtl("illum 1e400"));
+    }
+
+    /**
+     * An index of refraction that is not one (0, negative, infinite) is a warning and the default
+     * kept: tinyobjloader takes any Ni without a check, and a library that is read elsewhere
+     * should not stop a render here over a value only glass uses.
+     */
+    @Test
+    void anNiThatIsNotAnIndexOfRefractionIsAWarning() throws Exception {
+        for (String ni : new String[] {"0", "-1.5", "1e400"}) {
+            Files.writeString(dir.resolve("m.mtl"), "newmtl a\nNi " + ni + "\nKd 0.5 0.5 0.5\n", StandardCharsets.UTF_8);
+            Path obj = Files.writeString(dir.resolve("m.obj"), "mtllib m.mtl\nusemtl a\n" + TRIANGLE + "f 1 2 3\n");
+            ObjModel model = ObjLoader.load(obj, false);
+            assertEquals(1.0, model.materials().get(0).ior(), "the default, read as no index (glass takes 1.5)");
+            assertEquals(0.5, model.materials().get(0).kd()[0], "the rest of the material is read");
+            assertEquals(java.util.List.of(dir.resolve("m.mtl") + ":2: Ni must be a finite number greater than 0, got " + ni
+                                           + "; kept the default"), model.warnings());
+        }
     }
 
     @Test

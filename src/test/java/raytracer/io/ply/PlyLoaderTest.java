@@ -99,20 +99,22 @@ class PlyLoaderTest {
         huge count               | 'ply\\nformat ascii 1.0\\nelement vertex 3000000000\\nend_header\\n'                | needs a count from 0 to 2147483647
         unknown type             | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty flaot x\\nend_header\\n'      | header line 4: unknown property type 'flaot'
         property first           | 'ply\\nformat ascii 1.0\\nproperty float x\\nend_header\\n'                          | header line 3: a property before any element
-        unknown keyword          | 'ply\\nformat ascii 1.0\\nelemnt vertex 1\\nend_header\\n'                          | header line 3: unknown header keyword 'elemnt'
+        unknown keyword          | 'ply\\nformat ascii 1.0\\nelemnt vertex 1\\nend_header\\n'                          | no 'vertex' element (skipped: header line 3: unknown keyword 'elemnt')
         real list count          | 'ply\\nformat ascii 1.0\\nelement face 1\\nproperty list float int vertex_indices\\nend_header\\n' | a list's count must be of an integer type
         no vertex element        | 'ply\\nformat ascii 1.0\\nelement face 0\\nproperty list uchar int vertex_indices\\nend_header\\n'  | no 'vertex' element
         no z                     | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nend_header\\n0 0\\n' | needs scalar properties x, y and z
         no faces                 | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 0 0\\n' | no faces
         no index list            | 'ply\\nformat ascii 1.0\\nelement vertex 0\\nproperty float x\\nproperty float y\\nproperty float z\\nelement face 0\\nproperty int a\\nend_header\\n' | needs a list property vertex_indices
-        two corners              | 'HEADER2 0 1\\n'                                                                    | face 0 (of 1, counting from 0): a face needs 3 to 65536 vertices, got 2
+        two corners              | 'HEADER2 0 1\\n'                                                                    | no faces (a PLY mesh needs a 'face' element with vertex_indices; its 1 face has fewer than 3 corners)
+        too many corners         | 'ply\\nformat ascii 1.0\\nelement vertex 3\\nproperty float x\\nproperty float y\\nproperty float z\\nelement face 1\\nproperty list uint int vertex_indices\\nend_header\\n0 0 0\\n1 0 0\\n0 1 0\\n65537 0 1\\n' | :13: face 0 (of 1, counting from 0): a face of 65537 corners; at most 65536 are read
+        negative list count      | 'ply\\nformat ascii 1.0\\nelement vertex 3\\nproperty float x\\nproperty float y\\nproperty float z\\nelement face 1\\nproperty list int8 int vertex_indices\\nend_header\\n0 0 0\\n1 0 0\\n0 1 0\\n-1 0 1\\n' | :13: face 0 (of 1, counting from 0): a list of -1 vertices
         index out of range       | 'HEADER3 0 1 3\\n'                                                                  | face 0 (of 1, counting from 0): vertex index 3 is out of range (the file has 3 vertices)
         negative index           | 'HEADER3 0 -1 2\\n'                                                                 | vertex index -1 is out of range
         two face elements        | 'ply\\nformat ascii 1.0\\nelement vertex 3\\nproperty float x\\nproperty float y\\nproperty float z\\nelement face 1\\nproperty list uchar int vertex_indices\\nelement face 1\\nproperty list uchar int vertex_indices\\nend_header\\n0 0 0\\n1 0 0\\n0 1 0\\n3 0 1 2\\n3 0 2 1\\n' | a second 'face' element
         truncated face           | 'HEADER3 0 1\\n'                                                                    | face 0 (of 1, counting from 0): the file ends early (truncated)
         not a number             | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 zero 0\\n' | vertex 0 (of 1, counting from 0): property 'y': 'zero' is not a number
-        not finite               | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 NaN 0\\n' | vertex 0 (of 1, counting from 0): its position is not finite
-        beyond a triangle        | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty double y\\nproperty float z\\nend_header\\n0 1e80 0\\n' | vertex 0 (of 1, counting from 0): its position coordinate 1.0E80 is beyond 1.0E75
+        not finite               | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n0 NaN 0\\n' | vertex 0 (of 1, counting from 0): property 'y': its position is not finite
+        beyond a triangle        | 'ply\\nformat ascii 1.0\\nelement vertex 1\\nproperty float x\\nproperty double y\\nproperty float z\\nend_header\\n0 1e80 0\\n' | vertex 0 (of 1, counting from 0): property 'y': its position coordinate 1.0E80 is beyond 1.0E75
         real index               | 'HEADER3 0 1 2.5\\n'                                                                | is not an integer
         overstated count         | 'ply\\nformat binary_little_endian 1.0\\nelement vertex 700000000\\nproperty float x\\nproperty float y\\nproperty float z\\nend_header\\n' | vertex 0 (of 700000000, counting from 0): the file ends early
         """)
