@@ -50,7 +50,7 @@ public abstract class GeometricObject {
      * without a material (an aggregate, whose leaves carry their own).
      */
     public boolean usesTextureCoordinates() {
-        return material == null || material.usesTextureCoordinates();
+        return material == null || material.needs().textureCoordinates();
     }
 
     public Material getMaterial() {

@@ -130,13 +130,28 @@ public abstract class Light {
         return castsShadows;
     }
 
+    /**
+     * The book's test before a light sample counts, casts_shadows() and in_shadow(): true when the
+     * light casts shadows and one falls on the hit ({@link #inShadow}). A shadow ray the scene
+     * analysis left out ({@link #leaveOutShadowRays}) is counted where it would have been traced.
+     */
+    public final boolean shadowed(ShadeRec sr, double distance) {
+        if (castsShadows) {
+            return inShadow(sr, distance);
+        }
+        if (shadowRaysLeftOut) {
+            sr.scratch.skipped[Skipped.SHADOW_RAYS]++;
+        }
+        return false;
+    }
+
     public void setCastsShadows(boolean castsShadows) {
         this.castsShadows = castsShadows;
     }
 
     /**
      * Stops tracing shadow rays towards this light because the scene analysis proved that none
-     * could be blocked; the shading counts the rays it no longer traces
+     * could be blocked; {@link #shadowed} counts the rays no longer traced
      * ({@link Skipped#SHADOW_RAYS}).
      */
     public void leaveOutShadowRays() {

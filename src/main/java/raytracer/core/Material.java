@@ -28,35 +28,12 @@ public abstract class Material {
     public abstract void areaLightShade(ShadeRec sr, MutableRgb out);
 
     /**
-     * Whether shading reads the hit's u, v (through a texture). A material that says false lets
-     * the shapes it covers skip computing them; the default says true, to be safe.
+     * What shading needs, asked by the scene analysis before rendering. This default is direct
+     * light alone, reading u, v to be safe: a material that says it does not lets the shapes it
+     * covers skip computing them.
      */
-    public boolean usesTextureCoordinates() {
-        return true;
-    }
-
-    /** True when shading may trace reflected rays whose weight is not zero (a mirror, a glossy lobe, glass). */
-    public boolean needsReflection() {
-        return false;
-    }
-
-    /** True when shading may trace refracted rays whose weight is not zero (glass). */
-    public boolean needsRefraction() {
-        return false;
-    }
-
-    /** True when shading may trace secondary rays at all, even rays whose radiance it then multiplies by 0. */
-    public boolean tracesRays() {
-        return needsReflection() || needsRefraction();
-    }
-
-    /**
-     * True when shading draws numbers of its own from the worker's random generator (the
-     * directions of glossy rays): leaving such a material's work out would move every later draw
-     * of the pixel.
-     */
-    public boolean drawsSamples() {
-        return false;
+    public ShadingNeeds needs() {
+        return new ShadingNeeds(true, false, false, false);
     }
 
     /**

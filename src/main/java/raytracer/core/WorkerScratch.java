@@ -60,6 +60,25 @@ public final class WorkerScratch {
     /** Work the scene analysis left out, counted where it would have been done: one count per {@link Skipped} kind. */
     public final long[] skipped = new long[Skipped.KINDS];
 
+    /** Starts pixel sample {@code j}: its sample values, the free generator reseeded from them, and its camera ray counted. */
+    public void startSample(int j) {
+        samples.startSample(j);
+        rng.reseed(samples.sampleKey(j));
+        primaryRays++;
+    }
+
+    /**
+     * {@code L}, or black when it came out NaN or infinite: such a sample is counted and reported
+     * (a defect to fix, never a pixel to show) and weighs as a black one.
+     */
+    public MutableRgb finite(MutableRgb L) {
+        if (!(Double.isFinite(L.r) && Double.isFinite(L.g) && Double.isFinite(L.b))) {
+            nonFiniteSamples++;
+            L.setBlack();
+        }
+        return L;
+    }
+
     /** Scratch for a render of {@code world} that traces every term of the whole tree. */
     public WorkerScratch(World world) {
         this(world, RayTreeSettings.FULL_TREE);

@@ -1,19 +1,13 @@
 package raytracer.materials;
 
-import java.util.ArrayList;
-import java.util.List;
 import raytracer.brdf.GlossySpecular;
-import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
 import raytracer.btdf.PerfectTransmitter;
-import raytracer.core.Background;
-import raytracer.core.Material;
 import raytracer.core.PixelSamples;
-import raytracer.core.ShadeRec;
-import raytracer.core.Skip;
 import raytracer.core.RayTreePolicy;
+import raytracer.core.ShadeRec;
+import raytracer.core.ShadingNeeds;
 import raytracer.core.WorkerScratch;
-import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
@@ -23,7 +17,7 @@ import raytracer.math.MutableVec3;
  * Glass (report section 3; Suffern, chapter 28; area lights: chapter 18): the exact Fresnel
  * reflectance R splits the light into a mirror ray weighted R and a refracted ray weighted 1 - R
  * (R = 1 past the critical angle; the transmitter's sample_f gives that ray and weight), plus
- * Phong highlights from the lights. Beer's law: a hit seen from inside the medium ends a
+ * Phong highlights from the lights (it extends Phong, as in the book, with no diffuse or ambient term). Beer's law: a hit seen from inside the medium ends a
  * segment travelled through it, so the radiance found there is multiplied by exp(-sigma_a t), per
  * channel. That covers refracted rays, internal reflections and camera rays starting inside alike.
  * A back face means the ray crossed the surface from inside: a ray that only touches the surface
@@ -33,25 +27,21 @@ import raytracer.math.MutableVec3;
  * medium also leaves it, where the factors cancel, and leaving them out keeps paths cut short by
  * the recursion limit from looking brighter than they are.
  */
-public final class Dielectric extends Material {
-    /** Seen by rays reflected or refracted off this object that escape, instead of the scene's background. */
-    private Background reflectionMap;
-    private DirectLighting lighting;
+public final class Dielectric extends Phong {
     private final PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
     private final PerfectTransmitter transmitter;
     private final RGBColor absorption;
 
     public Dielectric(double ior, RGBColor absorption, double ks, double exp) {
+        super(0, 0, RGBColor.BLACK, new GlossySpecular(ks, RGBColor.WHITE, exp, false), null);
         this.transmitter = new PerfectTransmitter(ior);
         this.absorption = absorption;
-        this.lighting = new DirectLighting(new Lambertian(0, RGBColor.BLACK), new Lambertian(0, RGBColor.BLACK),
-                                           new GlossySpecular(ks, RGBColor.WHITE, exp, false));
     }
 
     @Override
     public void shade(ShadeRec sr, MutableRgb out) {
         if (!seenFromInside(sr, out)) {
-            lighting.shade(sr, out);
+            super.shade(sr, out);
         }
         transmitAndReflect(sr, out);
     }
@@ -59,7 +49,7 @@ public final class Dielectric extends Material {
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         if (!seenFromInside(sr, out)) {
-            lighting.areaLightShade(sr, out);
+            super.areaLightShade(sr, out);
         }
         transmitAndReflect(sr, out);
     }
@@ -104,13 +94,13 @@ public final class Dielectric extends Material {
             // the refracted part (wi holds its direction); the branch's weight includes the
             // transmittance of the segment that ended here
             if (r < 1 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t * tr, t * tg, t * tb)) {
-                BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
+                BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap());
                 out.addProduct(incoming, RGBColor.WHITE, t);
             }
             // the mirror part, R (all of it under total internal reflection)
             if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r * tr, r * tg, r * tb)) {
                 mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
-                BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+                BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap()));
                 out.addProduct(incoming, weight, r);
             }
         }
@@ -121,38 +111,14 @@ public final class Dielectric extends Material {
         }
     }
 
-
+    /** Glass traces reflected and refracted rays: what lies behind it can be seen. */
     @Override
-    public boolean needsReflection() {
-        return true;
-    }
-
-    @Override
-    public boolean needsRefraction() {
-        return true;
-    }
-
-    /** The highlight is glass's only direct light: with ks = 0 the lights are not evaluated on it. */
-    @Override
-    public List<Skip> simplify(World world, boolean mayDropRays) {
-        List<Skip> skips = new ArrayList<>();
-        lighting = lighting.simplified(world, name(), skips);
-        return skips;
-    }
-
-    /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
-    public void setReflectionMap(Background reflectionMap) {
-        this.reflectionMap = reflectionMap;
+    public ShadingNeeds needs() {
+        return new ShadingNeeds(false, true, true, false);
     }
 
     /** The index of refraction inside the surface (outside is vacuum). */
     public double ior() {
         return transmitter.ior();
-    }
-
-    /** No texture: u, v are never read. */
-    @Override
-    public boolean usesTextureCoordinates() {
-        return false;
     }
 }

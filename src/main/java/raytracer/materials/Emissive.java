@@ -5,6 +5,7 @@ import raytracer.core.WorkerScratch;
 import raytracer.math.Ray;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;
+import raytracer.core.ShadingNeeds;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
 
@@ -59,9 +60,9 @@ public final class Emissive extends Material {
         shade(sr, out);
     }
 
-    /** No texture: u, v are never read. */
+    /** Direct light alone, and no texture: u, v are never read. */
     @Override
-    public boolean usesTextureCoordinates() {
-        return false;
+    public ShadingNeeds needs() {
+        return ShadingNeeds.directLight(false);
     }
 }

@@ -1,78 +1,43 @@
 package raytracer.materials;
 
-import java.util.ArrayList;
-import java.util.List;
 import raytracer.brdf.GlossySpecular;
-import raytracer.brdf.Lambertian;
-import raytracer.core.Material;
-import raytracer.core.ShadeRec;
-import raytracer.core.Skip;
-import raytracer.core.Texture;
-import raytracer.core.World;
+import raytracer.core.Background;
 import raytracer.math.RGBColor;
-import raytracer.math.MutableRgb;
 
-/** Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18). */
-public final class Phong extends Material {
-    /** Whether a texture that reads u, v replaced the plain diffuse colour. */
-    private boolean textured;
-    private final double ka;
-    private final double kd;
-    private RGBColor cd;
+/**
+ * Diffuse plus Phong highlights (report eq. 1, Suffern section 15.5; area lights: chapter 18):
+ * ambient ka cd, Lambertian kd cd / pi and the glossy lobe ks cs cos^e(alpha). Reflective,
+ * GlossyReflector and the glasses extend it, as in the book.
+ */
+public class Phong extends LitMaterial {
     private final GlossySpecular specular;
-    private DirectLighting lighting;
+    /** Seen by the rays a subclass traces that escape, instead of the scene's background; null: the scene's. */
+    private Background reflectionMap;
 
     public Phong(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp, boolean normalized) {
-        this.ka = ka;
-        this.kd = kd;
-        this.cd = cd;
-        this.specular = new GlossySpecular(ks, cs, exp, normalized);
-        this.lighting = new DirectLighting(new Lambertian(ka, cd), new Lambertian(kd, cd), specular);
+        this(ka, kd, cd, new GlossySpecular(ks, cs, exp, normalized), null);
     }
 
-    /** Replaces the diffuse colour by a texture looked up at each hit. */
-    public void setTexture(Texture texture) {
-        textured = texture.usesTextureCoordinates();
-        this.cd = null;
-        this.lighting = new DirectLighting(new Lambertian(ka, texture), new Lambertian(kd, texture), specular);
+    /** With a lobe of its own, weighed against glossy rays by {@code mis} (null: not). */
+    Phong(double ka, double kd, RGBColor cd, GlossySpecular specular, GlossyLightMis mis) {
+        super(ka, kd, cd, specular, LightingTerms.PHYSICAL, mis);
+        this.specular = specular;
     }
 
-    @Override
-    public void shade(ShadeRec sr, MutableRgb out) {
-        lighting.shade(sr, out);
-    }
-
-    @Override
-    public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        lighting.areaLightShade(sr, out);
-    }
-
-    @Override
-    public boolean usesTextureCoordinates() {
-        return textured;
-    }
-
-    @Override
-    public List<Skip> simplify(World world, boolean mayDropRays) {
-        List<Skip> skips = new ArrayList<>();
-        lighting = lighting.simplified(world, name(), skips);
-        return skips;
-    }
-
-    public double ka() {
-        return ka;
-    }
-
-    public double kd() {
-        return kd;
-    }
-
-    /** The diffuse colour, or null when a texture replaced it. */
-    public RGBColor cd() {
-        return cd;
-    }
-
-    public GlossySpecular specular() {
+    public final GlossySpecular specular() {
         return specular;
+    }
+
+    /**
+     * Gives this object its own environment for the rays it traces (report section 1: a mirror's,
+     * glossy or glass rays; plain Phong traces none); null: the scene's.
+     */
+    public final void setReflectionMap(Background reflectionMap) {
+        this.reflectionMap = reflectionMap;
+    }
+
+    /** The object's own environment for the rays it traces, or null for the scene's. */
+    public final Background reflectionMap() {
+        return reflectionMap;
     }
 }

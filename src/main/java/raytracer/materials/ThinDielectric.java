@@ -1,18 +1,12 @@
 package raytracer.materials;
 
-import java.util.ArrayList;
-import java.util.List;
 import raytracer.brdf.GlossySpecular;
-import raytracer.brdf.Lambertian;
 import raytracer.brdf.PerfectSpecular;
-import raytracer.core.Background;
-import raytracer.core.Material;
 import raytracer.core.PixelSamples;
 import raytracer.core.RayTreePolicy;
 import raytracer.core.ShadeRec;
-import raytracer.core.Skip;
+import raytracer.core.ShadingNeeds;
 import raytracer.core.WorkerScratch;
-import raytracer.core.World;
 import raytracer.math.Fresnel;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
@@ -36,20 +30,16 @@ import raytracer.math.RGBColor;
  * incidence and part towards Brewster's angle (60 degrees, index 1.5: 0.164 against 0.152).
  * Plus Phong highlights from the lights, on either side.
  */
-public final class ThinDielectric extends Material {
-    /** Seen by rays reflected or transmitted by this object that escape, instead of the scene's background. */
-    private Background reflectionMap;
-    private DirectLighting lighting;
+public final class ThinDielectric extends Phong {
     private final PerfectSpecular mirror = new PerfectSpecular(1, RGBColor.WHITE);
     private final double ior;
 
     public ThinDielectric(double ior, double ks, double exp) {
+        super(0, 0, RGBColor.BLACK, new GlossySpecular(ks, RGBColor.WHITE, exp, false), null);
         if (!(ior > 0) || !Double.isFinite(ior)) {
             throw new IllegalArgumentException("index of refraction must be positive, got " + ior);
         }
         this.ior = ior;
-        this.lighting = new DirectLighting(new Lambertian(0, RGBColor.BLACK), new Lambertian(0, RGBColor.BLACK),
-                                           new GlossySpecular(ks, RGBColor.WHITE, exp, false));
     }
 
     /**
@@ -63,13 +53,13 @@ public final class ThinDielectric extends Material {
 
     @Override
     public void shade(ShadeRec sr, MutableRgb out) {
-        lighting.shade(sr, out);
+        super.shade(sr, out);
         transmitAndReflect(sr, out);
     }
 
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        lighting.areaLightShade(sr, out);
+        super.areaLightShade(sr, out);
         transmitAndReflect(sr, out);
     }
 
@@ -92,50 +82,25 @@ public final class ThinDielectric extends Material {
         MutableRgb incoming = scratch.color(next);
         if (t > 0 && policy.showsRefraction(sr.depth) && policy.recordBranchWeight(sr.depth, t, t, t)) {
             wi.set(sr.ray.dx, sr.ray.dy, sr.ray.dz);
-            BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap);
+            BranchRay.trace(sr, wi, PixelSamples.REFRACTED, scratch, incoming, reflectionMap());
             out.addProduct(incoming, RGBColor.WHITE, t);
         }
         if (r > 0 && policy.showsReflection(sr.depth) && policy.recordBranchWeight(sr.depth, r, r, r)) {
             MutableRgb weight = scratch.weight(sr.depth);
             mirror.sampleF(sr, sr.wo, 0, 0, wi, weight);
-            BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap));
+            BranchRay.trace(sr, wi, PixelSamples.REFLECTED, scratch, incoming, policy.reflectedEnvironment(sr.depth, reflectionMap()));
             out.addProduct(incoming, weight, r);
         }
     }
 
-
-    @Override
-    public boolean needsReflection() {
-        return true;
-    }
-
     /** The transmitted rays go through the surface, as refracted rays do: lights and objects behind it are seen. */
     @Override
-    public boolean needsRefraction() {
-        return true;
-    }
-
-    /** The highlight is the sheet's only direct light: with ks = 0 the lights are not evaluated on it. */
-    @Override
-    public List<Skip> simplify(World world, boolean mayDropRays) {
-        List<Skip> skips = new ArrayList<>();
-        lighting = lighting.simplified(world, name(), skips);
-        return skips;
-    }
-
-    /** Gives this object its own environment for its reflections (report section 1); null: the scene's. */
-    public void setReflectionMap(Background reflectionMap) {
-        this.reflectionMap = reflectionMap;
+    public ShadingNeeds needs() {
+        return new ShadingNeeds(false, true, true, false);
     }
 
     /** The index of refraction of the sheet's glass. */
     public double ior() {
         return ior;
-    }
-
-    /** No texture: u, v are never read. */
-    @Override
-    public boolean usesTextureCoordinates() {
-        return false;
     }
 }

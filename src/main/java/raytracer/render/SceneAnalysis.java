@@ -107,7 +107,7 @@ public final class SceneAnalysis {
         }
         for (GeometricObject wall : objects) {
             HalfSpace side = wall.wholePlane();
-            if (side == null || !wall.castsShadows() || wall.materials().stream().anyMatch(Material::needsRefraction)) {
+            if (side == null || !wall.castsShadows() || wall.materials().stream().anyMatch(m -> m.needs().refraction())) {
                 continue;
             }
             for (HalfSpace near : List.of(side, side.flipped())) {
@@ -145,7 +145,7 @@ public final class SceneAnalysis {
 
     private boolean drawsSamples() {
         return world.lightList().stream().anyMatch(Light::drawsSamples)
-               || world.materials().stream().anyMatch(Material::drawsSamples);
+               || world.materials().stream().anyMatch(m -> m.needs().drawsSamples());
     }
 
     /**
@@ -160,11 +160,11 @@ public final class SceneAnalysis {
             return;
         }
         String why = null;
-        if (world.materials().stream().noneMatch(Material::tracesRays)) {
+        if (world.materials().stream().noneMatch(m -> m.needs().rays())) {
             why = "no material traces secondary rays";
         } else if (!pass.reflection(0) && !pass.refraction(0)) {
             why = "the pass '" + pass.key() + "' traces no ray from the first hit";
-        } else if (!world.tracer().tracesSecondaryRays() && world.materials().stream().noneMatch(Material::drawsSamples)) {
+        } else if (!world.tracer().tracesSecondaryRays() && world.materials().stream().noneMatch(m -> m.needs().drawsSamples())) {
             why = "the tracer returns black for secondary rays";
         }
         if (why != null) {
@@ -275,7 +275,7 @@ public final class SceneAnalysis {
     /** True unless the camera's rays start outside the object's box and no material refracts. */
     private boolean mayBeSeenFromInside(GeometricObject object) {
         BBox origins = world.camera().rayOrigins(world.viewPlane());
-        if (origins == null || world.materials().stream().anyMatch(Material::needsRefraction)) {
+        if (origins == null || world.materials().stream().anyMatch(m -> m.needs().refraction())) {
             return true;
         }
         return !separatedBoxes(object.boundingBox(), origins);

@@ -106,4 +106,22 @@ final class TileOrder {
         return objects == null || objects[tile] == null ? everything : objects[tile].length;
     }
 
+
+    /**
+     * Fails unless {@code indices} name tiles of the list {@code tiles} of a width x height image,
+     * each once: two workers would render a tile given twice into one tile's arrays at once.
+     */
+    static void checkIndices(int[] indices, List<int[]> tiles, int width, int height) {
+        boolean[] given = new boolean[tiles.size()];
+        for (int index : indices) {
+            if (index < 0 || index >= tiles.size()) {
+                throw new IllegalArgumentException("tile " + index + " is not one of the " + tiles.size() + " tiles of a "
+                                                   + width + "x" + height + " image");
+            }
+            if (given[index]) {
+                throw new IllegalArgumentException("tile " + index + " is given twice");
+            }
+            given[index] = true;
+        }
+    }
 }

@@ -209,7 +209,7 @@ public final class Instance extends GeometricObject implements LocalFrame {
     /** The instance's own material replaces the object's, when it has one. */
     @Override
     public boolean usesTextureCoordinates() {
-        return getMaterial() != null ? getMaterial().usesTextureCoordinates() : object.usesTextureCoordinates();
+        return getMaterial() != null ? getMaterial().needs().textureCoordinates() : object.usesTextureCoordinates();
     }
 
     @Override
