@@ -74,8 +74,6 @@ class ArchitectureTest {
         Map.entry("io.ply", Set.of("math", "shapes", "shapes.mesh")),
         // a scene's mesh objects are OBJ files: the scene reader uses the OBJ reader, not the reverse
         Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "io.ply", "reference", "cache"))),
-        // the allocation study's textbook path, beside the renderer; no package may use it (none lists it)
-        Map.entry("study", Set.of("math", "core", "brdf", "materials", "lights", "tracers", "render")),
         // a scene file and a render's options made into a scene to render, for the command line and the Spark job
         Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene"))),
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",

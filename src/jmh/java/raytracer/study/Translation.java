@@ -67,9 +67,6 @@ final class Translation {
         if (material instanceof raytracer.materials.Matte m) {
             return phong(m.ka(), m.kd(), m.cd(), null);
         }
-        if (material instanceof raytracer.materials.Phong p) {
-            return phong(p.ka(), p.kd(), p.cd(), lobe(p.specular()));
-        }
         if (material instanceof raytracer.materials.Reflective r) {
             if (r.schlick()) {
                 throw refuse("reflective material with Schlick's Fresnel");
@@ -78,6 +75,11 @@ final class Translation {
                 throw refuse("reflective material with a reflection map");
             }
             return new ImmutableReflective(phong(r.ka(), r.kd(), r.cd(), lobe(r.specular())), r.mirror().reflectance());
+        }
+        // Phong itself, not the materials that extend it (as in the book) with rays of their own
+        if (material != null && material.getClass() == raytracer.materials.Phong.class) {
+            raytracer.materials.Phong p = (raytracer.materials.Phong) material;
+            return phong(p.ka(), p.kd(), p.cd(), lobe(p.specular()));
         }
         throw refuse("material " + name(material));
     }
