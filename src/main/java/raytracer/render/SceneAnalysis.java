@@ -238,7 +238,7 @@ public final class SceneAnalysis {
         }
         BBox box = caster.boundingBox();
         for (GeometricObject other : objects) {
-            if (other != caster && !separated(box, other.boundingBox(), light)) {
+            if (other != caster && !BoxSides.separated(box, other.boundingBox(), light)) {
                 return false;
             }
         }
@@ -278,39 +278,6 @@ public final class SceneAnalysis {
         if (origins == null || world.materials().stream().anyMatch(m -> m.needs().refraction())) {
             return true;
         }
-        return !separatedBoxes(object.boundingBox(), origins);
-    }
-
-    /**
-     * True when an axis-aligned plane has the caster's box strictly on one side and the other
-     * object's box and the light on the other: every shadow ray from the other object to the
-     * light then stays on that side.
-     */
-    private static boolean separated(BBox caster, BBox other, Light light) {
-        for (HalfSpace h : sides(other)) {
-            if (h.excludes(caster) && light.keepsShadowRaysWithin(h)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static boolean separatedBoxes(BBox a, BBox b) {
-        for (HalfSpace h : sides(b)) {
-            if (h.excludes(a)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** The six half-spaces bounded by the faces of a box, each holding the box; none for an unbounded box. */
-    private static List<HalfSpace> sides(BBox box) {
-        if (!box.isBounded()) {
-            return List.of();
-        }
-        return List.of(new HalfSpace(-1, 0, 0, -box.x0()), new HalfSpace(1, 0, 0, box.x1()),
-                       new HalfSpace(0, -1, 0, -box.y0()), new HalfSpace(0, 1, 0, box.y1()),
-                       new HalfSpace(0, 0, -1, -box.z0()), new HalfSpace(0, 0, 1, box.z1()));
+        return !BoxSides.separated(object.boundingBox(), origins);
     }
 }

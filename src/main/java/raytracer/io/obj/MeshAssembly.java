@@ -17,7 +17,7 @@ final class MeshAssembly {
     private MeshAssembly() {
     }
 
-    static ParsedMesh build(ObjLoader parsed, boolean smoothNormals) {
+    static ParsedMesh build(ObjArrays parsed, boolean smoothNormals) {
         int[] materialIds = parsed.materialIds();
         if (parsed.cornerVt() == null && parsed.cornerVn() == null) {
             int[] v = parsed.cornerV().toArray();
@@ -57,7 +57,7 @@ final class MeshAssembly {
         private int[] slots = new int[1024];
         private int made;
 
-        Triples(ObjLoader parsed) {
+        Triples(ObjArrays parsed) {
             filePositions = parsed.positions();
             fileUvs = parsed.texcoords();
             fileNormals = parsed.normals();

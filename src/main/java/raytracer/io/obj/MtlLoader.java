@@ -24,8 +24,8 @@ final class MtlLoader {
     /** Far more than any material library; a path to something else is refused before it is read. */
     static final long MAX_BYTES = 64L << 20;
     private static final Pattern LINE = Pattern.compile("\\s*([^\\s#]\\S*)(?:\\s+(.*?))?\\s*");
-    private static final Pattern COLOR = Pattern.compile("(" + ObjLoader.NUMBER + ")(?:\\s+(" + ObjLoader.NUMBER + ")\\s+(" + ObjLoader.NUMBER + "))?");
-    private static final Pattern SCALAR = Pattern.compile(ObjLoader.NUMBER);
+    private static final Pattern COLOR = Pattern.compile("(" + ObjPatterns.NUMBER + ")(?:\\s+(" + ObjPatterns.NUMBER + ")\\s+(" + ObjPatterns.NUMBER + "))?");
+    private static final Pattern SCALAR = Pattern.compile(ObjPatterns.NUMBER);
     private static final Set<String> KNOWN = Set.of("Kd", "Ks", "Ka", "Ke", "Ns", "d", "Tr", "Ni", "illum", "map_Kd",
         "map_Bump", "map_bump", "bump", "norm");
     /** Keys of the specification and of common extensions (PBR) that these materials do not use. */

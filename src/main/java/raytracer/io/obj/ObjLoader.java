@@ -8,9 +8,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.zip.GZIPInputStream;
 import java.util.zip.ZipException;
 import raytracer.image.FileKind;
@@ -30,36 +28,15 @@ import raytracer.shapes.mesh.ParsedMesh;
  * tolerate is a warning ({@link FileWarnings}), a line that does not parse an error.
  */
 public final class ObjLoader {
-    static final String NUMBER = "[-+]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?";
-    /** Also catch nan and inf, to report them as such rather than as garbage. */
-    private static final String ANY_NUMBER = "[-+]?(?:(?i:nan|inf(?:inity)?)|(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?)";
-    static final Pattern KEYWORD = Pattern.compile("\\s*([^\\s#]+)");
-    private static final Pattern VERTEX = Pattern.compile(
-        "\\s*v\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")(?:\\s+" + ANY_NUMBER + "){0,4}\\s*(?:#.*)?");
-    private static final Pattern TEXCOORD = Pattern.compile(
-        "\\s*vt\\s+(" + ANY_NUMBER + ")(?:\\s+(" + ANY_NUMBER + "))?(?:\\s+" + ANY_NUMBER + ")?\\s*(?:#.*)?");
-    private static final Pattern NORMAL = Pattern.compile(
-        "\\s*vn\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s+(" + ANY_NUMBER + ")\\s*(?:#.*)?");
-    /** Fast paths for the commonest lines (the dragon is nothing else); on failure the general patterns decide. */
-    static final Pattern VERTEX_PLAIN = Pattern.compile("v +(" + NUMBER + ") +(" + NUMBER + ") +(" + NUMBER + ") *");
-    static final Pattern TRIANGLE_PLAIN = Pattern.compile("f +(\\d+) +(\\d+) +(\\d+) *");
-    private static final Pattern NAMED = Pattern.compile("\\s*(mtllib|usemtl|o|g|s)(?:\\s+(.*?))?\\s*");
-    /** The keywords read without copying them out of the line. */
-    private static final String[] KNOWN = {"v", "vt", "vn", "f", "mtllib", "usemtl", "o", "g", "s"};
-    /** Statements of the OBJ specification that a mesh of triangles has no use for. */
-    private static final Set<String> ACCEPTED = Set.of("l", "p", "cstype", "deg", "curv", "curv2", "surf", "parm", "end",
-        "vp", "bmat", "step", "trim", "hole", "scrv", "sp", "con", "mg", "call", "csh", "maplib", "usemap", "ctech",
-        "stech", "shadow_obj", "trace_obj", "lod", "bevel", "c_interp", "d_interp");
-
     private final Path file;
     private final String name;
-    private final Matcher keyword = KEYWORD.matcher("");
-    private final Matcher vertex = VERTEX.matcher("");
-    private final Matcher texcoord = TEXCOORD.matcher("");
-    private final Matcher normal = NORMAL.matcher("");
-    private final Matcher vertexPlain = VERTEX_PLAIN.matcher("");
-    private final Matcher trianglePlain = TRIANGLE_PLAIN.matcher("");
-    private final Matcher named = NAMED.matcher("");
+    private final Matcher keyword = ObjPatterns.KEYWORD.matcher("");
+    private final Matcher vertex = ObjPatterns.VERTEX.matcher("");
+    private final Matcher texcoord = ObjPatterns.TEXCOORD.matcher("");
+    private final Matcher normal = ObjPatterns.NORMAL.matcher("");
+    private final Matcher vertexPlain = ObjPatterns.VERTEX_PLAIN.matcher("");
+    private final Matcher trianglePlain = ObjPatterns.TRIANGLE_PLAIN.matcher("");
+    private final Matcher named = ObjPatterns.NAMED.matcher("");
 
     private final Growing.Doubles positions = new Growing.Doubles();
     private final Growing.Floats texcoords = new Growing.Floats();
@@ -110,7 +87,8 @@ public final class ObjLoader {
             throw new ObjException(name + ": no faces (an OBJ mesh needs 'f' lines)");
         }
         fileWarnings.finish();
-        ParsedMesh mesh = MeshAssembly.build(this, smoothNormals);
+        ParsedMesh mesh = MeshAssembly.build(new ObjArrays(positions, texcoords, normals, faces.cornerV, faces.cornerVt,
+                                                            faces.cornerVn, materials.ids()), smoothNormals);
         List<ObjMaterial> used = materials.materials();
         return new ObjModel(mesh, used, List.copyOf(warnings), faces.faces, faces.ngons, materials.libraries(),
                             OpenSheets.of(mesh, used));
@@ -241,16 +219,16 @@ public final class ObjLoader {
                 }
             }
             default -> {
-                if (!ACCEPTED.contains(key)) {
+                if (!ObjPatterns.ACCEPTED.contains(key)) {
                     fileWarnings.unknownKeyword(lineNumber, key);
                 }
             }
         }
     }
 
-    /** The keyword at [start, end) of the line: one of {@link #KNOWN} without a copy, else a new String. */
+    /** The keyword at [start, end) of the line: one of {@link ObjPatterns#KNOWN} without a copy, else a new String. */
     private String keyword(int start, int end) {
-        for (String known : KNOWN) {
+        for (String known : ObjPatterns.KNOWN) {
             if (known.length() == end - start && spanIs(known, start)) {
                 return known;
             }
@@ -305,34 +283,5 @@ public final class ObjLoader {
 
     private ObjException error(String message) {
         return new ObjException(name + ":" + lineNumber + ": " + message);
-    }
-
-    // ---- read by MeshAssembly ----
-    Growing.Doubles positions() {
-        return positions;
-    }
-
-    Growing.Floats texcoords() {
-        return texcoords;
-    }
-
-    Growing.Floats normals() {
-        return normals;
-    }
-
-    Growing.Ints cornerV() {
-        return faces.cornerV;
-    }
-
-    Growing.Ints cornerVt() {
-        return faces.cornerVt;
-    }
-
-    Growing.Ints cornerVn() {
-        return faces.cornerVn;
-    }
-
-    int[] materialIds() {
-        return materials.ids();
     }
 }

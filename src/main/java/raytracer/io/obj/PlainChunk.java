@@ -106,9 +106,9 @@ final class PlainChunk {
 
         Parser(CharSequence text, Scratch scratch) {
             this.text = text;
-            vertex = ObjLoader.VERTEX_PLAIN.matcher(text);
-            triangle = ObjLoader.TRIANGLE_PLAIN.matcher(text);
-            keyword = ObjLoader.KEYWORD.matcher(text);
+            vertex = ObjPatterns.VERTEX_PLAIN.matcher(text);
+            triangle = ObjPatterns.TRIANGLE_PLAIN.matcher(text);
+            keyword = ObjPatterns.KEYWORD.matcher(text);
             positions = scratch.positions;
             corners = scratch.corners;
             positions.size = 0;

@@ -13,7 +13,7 @@ import java.util.regex.Pattern;
  */
 record TextureMap(String file, double bumpScale) {
     private static final Pattern TOKEN = Pattern.compile("\\S+");
-    private static final Pattern NUMBER = Pattern.compile(ObjLoader.NUMBER);
+    private static final Pattern NUMBER = Pattern.compile(ObjPatterns.NUMBER);
 
     /** The file and {@code -bm} of {@code text}; a value that is not a number leaves the scale at 1. */
     static TextureMap parse(String text) {
