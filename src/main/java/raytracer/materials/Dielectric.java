@@ -40,18 +40,25 @@ public final class Dielectric extends Phong {
 
     @Override
     public void shade(ShadeRec sr, MutableRgb out) {
-        if (!seenFromInside(sr, out)) {
-            super.shade(sr, out);
-        }
-        transmitAndReflect(sr, out);
+        shadeGlass(sr, out, false);
     }
 
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        if (!seenFromInside(sr, out)) {
-            super.areaLightShade(sr, out);
+        shadeGlass(sr, out, true);
+    }
+
+    /** Phong's shading, by area_light_shade or not, but with no direct light on a hit seen from inside. */
+    private void shadeGlass(ShadeRec sr, MutableRgb out, boolean areaLights) {
+        if (seenFromInside(sr, out)) {
+            traceRays(sr, out);
+            return;
         }
-        transmitAndReflect(sr, out);
+        if (areaLights) {
+            super.areaLightShade(sr, out);
+        } else {
+            super.shade(sr, out);
+        }
     }
 
     /**
@@ -72,7 +79,8 @@ public final class Dielectric extends Phong {
      * Adds the refracted ray's radiance weighted 1 - R and the mirror ray's weighted R (Suffern,
      * chapter 28), then applies Beer's law to the whole when the hit ends a segment inside.
      */
-    private void transmitAndReflect(ShadeRec sr, MutableRgb out) {
+    @Override
+    void traceRays(ShadeRec sr, MutableRgb out) {
         WorkerScratch scratch = sr.scratch;
         RayTreePolicy policy = scratch.policy;
         // Beer's law: a hit seen from inside ends a segment of length t through the medium

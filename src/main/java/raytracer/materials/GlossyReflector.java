@@ -44,18 +44,6 @@ public final class GlossyReflector extends Phong {
         return samples;
     }
 
-    @Override
-    public void shade(ShadeRec sr, MutableRgb out) {
-        super.shade(sr, out);
-        reflectGlossy(sr, out);
-    }
-
-    @Override
-    public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        super.areaLightShade(sr, out);
-        reflectGlossy(sr, out);
-    }
-
     /**
      * Adds the average over the glossy rays of the radiance each brings back times its weight
      * f cos(theta_i) / pdf (Suffern, chapter 25). The directions come from the glossy dimension of
@@ -64,7 +52,8 @@ public final class GlossyReflector extends Phong {
      * weighed against those samples ({@link GlossyLightMis}). The rays see the environment the
      * pass gives reflected rays (magenta for the first hit of the magenta-reflection pass).
      */
-    private void reflectGlossy(ShadeRec sr, MutableRgb out) {
+    @Override
+    void traceRays(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
         WorkerScratch scratch = sr.scratch;
         if (next > sr.world.viewPlane().maxDepth() || !scratch.policy.showsReflection(sr.depth)) {

@@ -49,14 +49,26 @@ abstract class LitMaterial extends Material {
         lighting = direct;
     }
 
+    /** Suffern's shade: the direct light of each light from its one direction, then the material's own rays. */
     @Override
     public void shade(ShadeRec sr, MutableRgb out) {
         lighting.shade(sr, out);
+        traceRays(sr, out);
     }
 
+    /** Suffern's area_light_shade: the direct light of each light's samples, then the material's own rays. */
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb out) {
         lighting.areaLightShade(sr, out);
+        traceRays(sr, out);
+    }
+
+    /**
+     * Adds into {@code out}, after the direct light (which set sr.wo), the radiance of the rays
+     * the material traces: a mirror's (Reflective), glossy rays (GlossyReflector), glass's. The
+     * book's Matte and Phong trace none.
+     */
+    void traceRays(ShadeRec sr, MutableRgb out) {
     }
 
     /** The lighting in use: the book's, or what the analysis left of it. */

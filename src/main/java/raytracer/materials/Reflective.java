@@ -35,23 +35,12 @@ public final class Reflective extends Phong {
         this.mirror = new PerfectSpecular(schlick ? 1 : kr, cr);
     }
 
-    @Override
-    public void shade(ShadeRec sr, MutableRgb out) {
-        super.shade(sr, out);
-        reflect(sr, out);
-    }
-
-    @Override
-    public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        super.areaLightShade(sr, out);
-        reflect(sr, out);
-    }
-
     /**
      * Adds the radiance along the mirror direction (Suffern's Reflective::shade), times the
      * mirror's weight kr cr and the Fresnel fraction; sr.wo is set by the direct light.
      */
-    private void reflect(ShadeRec sr, MutableRgb out) {
+    @Override
+    void traceRays(ShadeRec sr, MutableRgb out) {
         if (leftOut != null) {
             leftOut.count(sr);
             return;

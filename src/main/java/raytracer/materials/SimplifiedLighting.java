@@ -15,22 +15,18 @@ import raytracer.math.MutableVec3;
  * zero at every hit of the scene (a ka, kd or ks of 0, an ambient light of zero radiance), each
  * counted where it would have been evaluated ({@link Skipped}), and with constant textures read as
  * plain colours. Each left-out term would have added +0, so the image is the same to the bit.
- * When no term is left, the surface reflects no direct light: the lights are not evaluated and no
- * shadow ray is traced, and the samples it would have drawn are counted.
+ * When no term is left, the surface reflects no direct light: an {@link UnlitSurface} takes its place.
  */
 final class SimplifiedLighting implements Lighting {
     /** The book's lighting with the zero terms replaced ({@link LeftOutTerm}; no ambient BRDF when it is zero). */
     private final DirectLighting lighting;
     private final boolean ambientLeftOut;
     private final boolean lobeLeftOut;
-    /** No term reflects direct light. */
-    private final boolean dark;
 
-    private SimplifiedLighting(DirectLighting lighting, boolean ambientLeftOut, boolean lobeLeftOut, boolean dark) {
+    private SimplifiedLighting(DirectLighting lighting, boolean ambientLeftOut, boolean lobeLeftOut) {
         this.lighting = lighting;
         this.ambientLeftOut = ambientLeftOut;
         this.lobeLeftOut = lobeLeftOut;
-        this.dark = dark;
     }
 
     /**
@@ -56,75 +52,44 @@ final class SimplifiedLighting implements Lighting {
         }
         if (dark) {
             skips.add(new Skip(Skipped.LIGHT_SAMPLES, "lights not evaluated, no shadow rays", of + ": no term reflects direct light"));
-        } else {
-            if (noDiffuse) {
-                skips.add(new Skip(Skipped.DIFFUSE_TERMS, "diffuse term not evaluated", of + ": its diffuse reflectance is 0"));
-                d = new LeftOutTerm(Skipped.DIFFUSE_TERMS);
-            }
-            if (noLobe) {
-                skips.add(new Skip(Skipped.SPECULAR_LOBES, "specular lobe not evaluated", of + ": its specular reflectance is 0"));
-                s = new LeftOutTerm(Skipped.SPECULAR_LOBES);
-            }
+            return new UnlitSurface();
         }
-        if (!noAmbient && !dark && !noDiffuse && !noLobe) {
+        if (noDiffuse) {
+            skips.add(new Skip(Skipped.DIFFUSE_TERMS, "diffuse term not evaluated", of + ": its diffuse reflectance is 0"));
+            d = new LeftOutTerm(Skipped.DIFFUSE_TERMS);
+        }
+        if (noLobe) {
+            skips.add(new Skip(Skipped.SPECULAR_LOBES, "specular lobe not evaluated", of + ": its specular reflectance is 0"));
+            s = new LeftOutTerm(Skipped.SPECULAR_LOBES);
+        }
+        if (!noAmbient && !noDiffuse && !noLobe) {
             return constants ? new DirectLighting(a, d, s, lighting.terms, lighting.mis) : lighting;
         }
         DirectLighting kept = new DirectLighting(noAmbient ? null : a, d, s, lighting.terms, noLobe ? null : lighting.mis);
-        return new SimplifiedLighting(kept, noAmbient, noLobe, dark);
+        return new SimplifiedLighting(kept, noAmbient, noLobe);
     }
 
     @Override
     public void shade(ShadeRec sr, MutableRgb L) {
-        if (dark) {
-            unlit(sr, L, false);
-            return;
-        }
         lighting.shade(sr, L);
         countAmbient(sr);
     }
 
     @Override
     public void areaLightShade(ShadeRec sr, MutableRgb L) {
-        if (dark) {
-            unlit(sr, L, true);
-            return;
-        }
         lighting.areaLightShade(sr, L);
         countAmbient(sr);
     }
 
     @Override
     public int lightSamplesToward(ShadeRec sr, Light light, MutableVec3 wi) {
-        return dark || lobeLeftOut ? 0 : lighting.lightSamplesToward(sr, light, wi);
+        return lobeLeftOut ? 0 : lighting.lightSamplesToward(sr, light, wi);
     }
 
     /** Counts the ambient term left out of a hit that shows direct light. */
     private void countAmbient(ShadeRec sr) {
         if (ambientLeftOut && sr.scratch.policy.showsDirect(sr.depth)) {
             sr.scratch.skipped[Skipped.AMBIENT_TERMS]++;
-        }
-    }
-
-    /**
-     * A surface that reflects no direct light: black, with sr.wo set as the lighting sets it, and
-     * the light samples not drawn counted (one per light from its direction or, by
-     * area_light_shade, those of each light that could reach it).
-     */
-    private void unlit(ShadeRec sr, MutableRgb L, boolean areaLights) {
-        sr.wo.set(-sr.ray.dx, -sr.ray.dy, -sr.ray.dz).normalize();
-        L.setBlack();
-        if (!sr.scratch.policy.showsDirect(sr.depth)) {
-            return;
-        }
-        countAmbient(sr);
-        long[] skipped = sr.scratch.skipped;
-        for (Light light : sr.world.lights()) {
-            if (!areaLights) {
-                skipped[Skipped.LIGHT_SAMPLES]++;
-            } else if (light.mayIlluminate(sr)) {
-                // each sample value is a function of its index: leaving them undrawn moves no later one
-                skipped[Skipped.LIGHT_SAMPLES] += LightSamples.count(sr, light);
-            }
         }
     }
 }

@@ -51,24 +51,13 @@ public final class ThinDielectric extends Phong {
         return r < 1 ? r + (1 - r) * (1 - r) * r / (1 - r * r) : 1;
     }
 
-    @Override
-    public void shade(ShadeRec sr, MutableRgb out) {
-        super.shade(sr, out);
-        transmitAndReflect(sr, out);
-    }
-
-    @Override
-    public void areaLightShade(ShadeRec sr, MutableRgb out) {
-        super.areaLightShade(sr, out);
-        transmitAndReflect(sr, out);
-    }
-
     /**
      * Adds the radiance found straight on through the sheet weighted T' and the mirror ray's
      * weighted R' (the lighting has set sr.wo). No Beer's law: the sheet has no thickness to
      * absorb over.
      */
-    private void transmitAndReflect(ShadeRec sr, MutableRgb out) {
+    @Override
+    void traceRays(ShadeRec sr, MutableRgb out) {
         int next = sr.depth + 1;
         if (next > sr.world.viewPlane().maxDepth()) {
             return;
