@@ -66,8 +66,9 @@ class ArchitectureTest {
         Map.entry("image.chart", Set.of("image")),
         // exact images, computed apart from the renderer's code so that they can check it
         Map.entry("reference", Set.of("math", "image")),
-        // folders of files kept between runs: writing through a temporary file is image's AtomicFile
-        Map.entry("cache", Set.of("image")),
+        // files kept between runs: parsed meshes with their trees (the OBJ reader's model in the mesh and
+        // BVH layouts) and converge's references (images); writing through a temporary file is image's AtomicFile
+        Map.entry("cache", Set.of("math", "image", "shapes", "shapes.mesh", "accel", "io.obj")),
         Map.entry("render", Set.of("math", "core", "image")),
         Map.entry("io.obj", union(FAMILIES, Set.of("math", "core", "image"))),
         // a PLY file is one mesh and nothing else (with the triangle's bound on coordinates)
@@ -77,7 +78,7 @@ class ArchitectureTest {
         // the allocation study's textbook path, beside the renderer; no package may use it (none lists it)
         Map.entry("study", Set.of("math", "core", "brdf", "materials", "lights", "tracers", "render")),
         // a scene file and a render's options made into a scene to render, for the command line and the Spark job
-        Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene"))),
+        Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene", "cache"))),
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",
                                                  "image.chart", "api", "cache"))));
 

@@ -3,13 +3,13 @@ package raytracer.api;
 import java.io.Serializable;
 import java.nio.file.Path;
 import raytracer.accel.Aggregation;
+import raytracer.cache.MeshCache;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
-import raytracer.io.scene.MeshCache;
 import raytracer.samplers.Samplers;
 
 /**
@@ -165,6 +165,11 @@ public record SceneOptions(Integer width, Integer height, Integer samples, Strin
 
     public Aggregation.Mode accelMode() {
         return Aggregation.Mode.parse(accel);
+    }
+
+    /** These options with the mesh cache in this user's default folder on this machine ({@link MeshCache#defaultDir}). */
+    public SceneOptions withDefaultMeshCache() {
+        return withMeshCache(MeshCache.defaultDir(System.getenv(), System.getProperty("user.home")));
     }
 
     /** The mesh cache, or null without one. */

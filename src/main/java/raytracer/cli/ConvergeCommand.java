@@ -19,6 +19,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import raytracer.api.FilterChoice;
+import raytracer.cache.ReferenceCache;
 import raytracer.accel.Aggregation;
 import raytracer.core.Sampler;
 import raytracer.core.ViewPlane;

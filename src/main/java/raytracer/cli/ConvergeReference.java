@@ -7,10 +7,10 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.TreeSet;
 import raytracer.cache.ContentStamp;
+import raytracer.cache.ReferenceCache;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.io.scene.LoadedScene;
@@ -137,12 +137,11 @@ final class ConvergeReference {
                           + inputs(scene, loaded.report().inputs());
         String what = "self-rendered, 2 x " + vp.numSamples() + " spp";
         Path file = cache == null ? null : cache.file(scene.getFileName().toString(), sceneBytes, settings);
-        Optional<Film> cached = file == null ? Optional.empty()
+        Optional<ReferenceCache.Reference> cached = file == null ? Optional.empty()
             : cache.load(file, why -> note.println("converge: reference: the cached " + file + " " + why + "; rendering it again"));
-        OptionalDouble noise = file == null ? OptionalDouble.empty() : cache.noise(file);
-        if (cached.isPresent() && noise.isPresent() && cached.get().width() == vp.hres() && cached.get().height() == vp.vres()) {
+        if (cached.isPresent() && cached.get().film().width() == vp.hres() && cached.get().film().height() == vp.vres()) {
             note.printf("converge: reference: %s (%s, seeds %d and %d; reused)%n", file, what, seed, other);
-            return new Image(cached.get(), noise.getAsDouble(), what);
+            return new Image(cached.get().film(), cached.get().noiseRmse(), what);
         }
         note.printf("converge: rendering the reference: 2 x %d spp, seeds %d and %d, no cutoff%n", vp.numSamples(), seed, other);
         Film a = new Film(vp.hres(), vp.vres());
@@ -160,8 +159,8 @@ final class ConvergeReference {
             }
         }
         if (file != null) {
-            cache.store(file, film, "reference image of " + scene.toAbsolutePath() + ", rendered by render converge\n" + settings
-                                    + ReferenceCache.NOISE_KEY + noiseRmse + "\n");
+            cache.store(file, film, noiseRmse, "reference image of " + scene.toAbsolutePath() + ", rendered by render converge\n"
+                                               + settings);
             note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, saved as %s%n", seconds, file);
         } else {
             note.printf(Locale.ROOT, "converge: reference: rendered in %.1f s, not saved (--no-cache)%n", seconds);

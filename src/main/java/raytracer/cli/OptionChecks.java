@@ -6,7 +6,7 @@ import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
 import raytracer.api.SceneOptions;
-import raytracer.io.scene.MeshCache;
+import raytracer.cache.MeshCache;
 import raytracer.render.Workers;
 
 /**

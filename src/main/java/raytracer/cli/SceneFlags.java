@@ -8,7 +8,7 @@ import picocli.CommandLine.ParameterException;
 import raytracer.accel.Aggregation;
 import raytracer.api.SceneOptions;
 import raytracer.core.ViewPlane;
-import raytracer.io.scene.MeshCache;
+import raytracer.cache.MeshCache;
 
 /**
  * The options that change a scene's image or how it is searched and cached, as picocli reads them:

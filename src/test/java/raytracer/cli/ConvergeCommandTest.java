@@ -49,6 +49,13 @@ class ConvergeCommandTest {
         return RenderCommandTest.run(Stream.concat(Stream.of("converge"), Stream.of(args)).toArray(String[]::new));
     }
 
+    /** The names of the reference cache's entries in {@code folder}, sorted (not its lock file). */
+    private static List<String> entries(Path folder) throws IOException {
+        try (Stream<Path> files = Files.list(folder)) {
+            return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".ref")).sorted().toList();
+        }
+    }
+
     /** The CSV's data lines, split into fields (the quoted configuration name first). */
     private static List<String[]> rows(Path csv) throws IOException {
         List<String> lines = Files.readAllLines(csv);
@@ -115,12 +122,9 @@ class ConvergeCommandTest {
         // 64 spp in two halves of 32, which the multi-jittered pattern rounds to 36
         assertTrue(first.err().contains("rendering the reference: 2 x 36 spp, seeds -2 and " + (-2 ^ ConvergeReference.OTHER_HALF)),
                    first.err());
-        try (Stream<Path> files = Files.list(cache)) {
-            List<String> names = files.map(p -> p.getFileName().toString()).sorted().toList();
-            assertEquals(2, names.size(), names.toString());
-            assertTrue(names.get(0).matches("spheres-[0-9a-f]{16}\\.pfm"), names.toString());
-            assertTrue(names.get(1).endsWith(".txt"));
-        }
+        List<String> names = entries(cache);
+        assertEquals(1, names.size(), names.toString());
+        assertTrue(names.get(0).matches("spheres-[0-9a-f]{16}\\.ref"), names.toString());
         List<String[]> firstCsv = rows(dir.resolve("a.csv"));
         assertEquals(3, firstCsv.size(), "1 and 4 spp and one time budget");
         args[args.length - 3] = dir.resolve("b.csv").toString();
@@ -137,9 +141,7 @@ class ConvergeCommandTest {
         Result other = converge(scene.toString(), "--spp", "1", "--reference-spp", "16", "--cache", cache.toString(), "-q",
                                 "--plot", dir.resolve("c.png").toString());
         assertEquals(0, other.code(), other.err());
-        try (Stream<Path> files = Files.list(cache)) {
-            assertEquals(4, files.count());
-        }
+        assertEquals(2, entries(cache).size());
     }
 
     /**
@@ -156,14 +158,11 @@ class ConvergeCommandTest {
                          csv.toString(), "--plot", dir.resolve("a.png").toString()};
         assertEquals(0, converge(args).code());
         String rmse = rows(csv).get(0)[4];
-        Path pfm;
-        try (Stream<Path> files = Files.list(cache)) {
-            pfm = files.filter(p -> p.toString().endsWith(".pfm")).findFirst().orElseThrow();
-        }
+        Path pfm = cache.resolve(entries(cache).get(0));
         byte[] good = Files.readAllBytes(pfm);
         for (float bad : new float[] {Float.NaN, 0.123f}) {
             byte[] changed = good.clone();
-            // the last pixel's blue channel, little-endian
+            // the last pixel's blue channel, little-endian: the entry ends with the image as a .pfm holds it
             int bits = Float.floatToRawIntBits(bad);
             for (int k = 0; k < 4; k++) {
                 changed[changed.length - 4 + k] = (byte) (bits >>> 8 * k);

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.OptionalInt;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.cache.MeshCache;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;

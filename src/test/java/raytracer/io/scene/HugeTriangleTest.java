@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cache.MeshCache;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;

@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cache.MeshCache;
 
 /**
  * Every file a scene reads besides the scene itself must be a regular file (issue 25, item 2): a

@@ -13,6 +13,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import raytracer.accel.MeshBVH;
+import raytracer.cache.MeshCache;
 import raytracer.core.GeometricObject;
 import raytracer.core.World;
 import raytracer.image.Film;

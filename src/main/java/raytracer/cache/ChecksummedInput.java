@@ -1,4 +1,4 @@
-package raytracer.io.scene;
+package raytracer.cache;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;

@@ -1,4 +1,4 @@
-package raytracer.io.scene;
+package raytracer.cache;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -16,12 +16,16 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import raytracer.core.World;
+import raytracer.io.scene.LoadReport;
+import raytracer.io.scene.LoadedScene;
+import raytracer.io.scene.SceneException;
+import raytracer.io.scene.SceneLoader;
 
 /**
- * The mesh cache as a good citizen (issue 25, item 12): before, it grew without bound, cached
- * meshes of 16 triangles, kept one entry per absolute path (the same files in 6 folders made 6
- * entries), never removed the entries of deleted OBJ files nor the .partial files of killed
- * writers, and could never cache a file whose name passed about 230 characters. Now it has a size
+ * The mesh cache as a good citizen: before, it grew without bound, cached meshes of 16 triangles,
+ * kept one entry per absolute path (the same files in 6 folders made 6 entries), never removed
+ * the entries of deleted OBJ files nor the .partial files of killed writers, and could never cache
+ * a file whose name passed about 230 characters. Now it has a size
  * cap with least-recently-used eviction, skips meshes that parse about as fast as they are read,
  * keys entries by content, removes stale .partial files, and bounds its names.
  */

@@ -1,4 +1,4 @@
-package raytracer.io.scene;
+package raytracer.cache;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -8,15 +8,9 @@ import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
-import java.util.List;
-import java.util.Set;
 import raytracer.accel.BvhFile;
 import raytracer.accel.FlatBVH;
-import raytracer.cache.ContentStamp;
 import raytracer.image.AtomicFile;
-import raytracer.io.obj.ObjMaterial;
-import raytracer.math.BBox;
-import raytracer.shapes.Triangle;
 import raytracer.shapes.mesh.Mesh;
 
 /**
@@ -25,7 +19,7 @@ import raytracer.shapes.mesh.Mesh;
  *
  * <pre>
  *   long magic "RTMESH", int {@link #VERSION}, int {@link BvhFile#VERSION}, long file length
- *   int header length, header ({@link Header}, written by {@link MeshCacheHeader})
+ *   int header length, header ({@link MeshCacheHeader})
  *   double[3 v] positions, float[3 v] normals?, float[2 v] uvs?, int[3 t] triangles, int[t] material ids?
  *   the BVH ({@link BvhFile}, in the mesh's order: no leaf order), each array starting on a multiple of 8
  *   int CRC-32C of every byte before it
@@ -36,30 +30,17 @@ import raytracer.shapes.mesh.Mesh;
  */
 final class MeshCacheFile {
     /**
-     * The layout above and what the OBJ reader and {@link MeshReader} make of a file: add 1 when
-     * either changes, so that files written before are rebuilt rather than trusted.
+     * The layout above, how entries are named, and what the mesh readers make of a file: add 1
+     * when any changes, so that files written before are rebuilt rather than trusted (6: named by
+     * the CRC-32C and CRC-32 of their key instead of its SHA-256).
      */
-    static final int VERSION = 5;
+    static final int VERSION = 6;
     private static final long MAGIC = 0x0000_4853_454d_5452L; // "RTMESH\0\0" little-endian
     /** The first bytes of every entry, by which the cache knows its own files among others in its folder. */
     static final byte[] MAGIC_BYTES = {'R', 'T', 'M', 'E', 'S', 'H', 0, 0};
     private static final int PREAMBLE = 8 + 4 + 4 + 8 + 4;
 
     private MeshCacheFile() {
-    }
-
-    /**
-     * What a cache file says before its arrays: the OBJ and the MTL files it was made from, the
-     * options it was made with, the figures --stats prints, the mesh's exact bounds (for the scene
-     * analysis), its MTL materials and which of them are open sheets ({@link raytracer.io.obj.ObjModel#sheets}).
-     */
-    record Header(ContentStamp source, String options, List<ContentStamp> libraries, int faces, int ngons, int vertices,
-                  int triangles, boolean normals, boolean uvs, boolean materialIds, BBox bounds,
-                  List<ObjMaterial> materials, Set<Integer> sheets) {
-    }
-
-    /** A whole entry as read back and checked: its header, its mesh (in leaf order) and its tree. */
-    record Contents(Header header, Mesh mesh, FlatBVH bvh) {
     }
 
     /** Bytes of an entry of {@code mesh} and {@code bvh}, but for its header (a few hundred bytes more). */
@@ -72,8 +53,8 @@ final class MeshCacheFile {
      * temporary file and a rename); texture paths are written relative to {@code folder}, the OBJ
      * file's.
      */
-    static AtomicFile.Body body(Header header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
-        byte[] head = MeshCacheHeader.encode(header, folder);
+    static AtomicFile.Body body(MeshCacheHeader header, Mesh mesh, FlatBVH bvh, Path folder) throws IOException {
+        byte[] head = header.encode(folder);
         long length = align(PREAMBLE + head.length) + arrays(mesh) + align(BvhFile.size(bvh)) + 4;
         return stream -> {
             ChecksummedOutput out = new ChecksummedOutput(stream);
@@ -112,14 +93,14 @@ final class MeshCacheFile {
      * fit, the rest is only counted into the checksum. An IOException says why the file is not one
      * this program can use.
      */
-    static Contents read(Path file, Path folder) throws IOException {
+    static MeshCacheEntry read(Path file, Path folder) throws IOException {
         try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ)) {
             long size = channel.size();
             if (size < PREAMBLE + 4) {
                 throw new IOException("it has " + size + " bytes");
             }
             ChecksummedInput in = new ChecksummedInput(channel, size - 4);
-            Parts parts = null;
+            MeshCacheParts parts = null;
             Exception failed = null;
             try {
                 // the preamble only chooses the message of a file refused anyway: another format, cut short
@@ -128,7 +109,7 @@ final class MeshCacheFile {
                 in.getBytes(head);
                 in.align();
                 try {
-                    parts = new Parts(MeshCacheHeader.decode(head, folder));
+                    parts = new MeshCacheParts(MeshCacheHeader.decode(head, folder));
                     parts.read(in, size);
                 } catch (IOException | RuntimeException e) {
                     failed = e;
@@ -159,84 +140,6 @@ final class MeshCacheFile {
                 return parts.check();
             } catch (IllegalArgumentException | IndexOutOfBoundsException e) {
                 throw new IOException("its contents are inconsistent (" + e.getMessage() + ")", e);
-            }
-        }
-    }
-
-    /** An entry's parts as read, before {@link #check}: the header, then the arrays it counts. */
-    private static final class Parts {
-        final Header header;
-        double[] positions;
-        float[] normals;
-        float[] uvs;
-        int[] triangles;
-        int[] ids;
-        FlatBVH bvh;
-
-        Parts(Header header) {
-            this.header = header;
-        }
-
-        /** Reads the arrays the header counts, sized from it once they are known to fit the file. */
-        void read(ChecksummedInput in, long size) throws IOException {
-            if (24L * header.vertices() + 12L * header.triangles() > size) {
-                throw new IOException("its header counts more vertices and triangles than it holds");
-            }
-            positions = new double[3 * header.vertices()];
-            in.getDoubles(positions);
-            normals = header.normals() ? getFloats(in, 3 * header.vertices()) : null;
-            uvs = header.uvs() ? getFloats(in, 2 * header.vertices()) : null;
-            triangles = getInts(in, 3 * header.triangles());
-            ids = header.materialIds() ? getInts(in, header.triangles()) : null;
-            bvh = BvhFile.read(in);
-            in.align();
-            if (in.remaining() != 0) {
-                throw new IOException("it holds " + in.remaining() + " bytes more than its header counts");
-            }
-        }
-
-        /** The parts checked against each other, as a whole entry. */
-        Contents check() throws IOException {
-            requireFinite(positions, "vertex");
-            requireFinite(normals, "normal");
-            requireFinite(uvs, "texture coordinate");
-            Mesh mesh = new Mesh(positions, normals, uvs, triangles, ids);
-            if (!mesh.bounds().equals(header.bounds())) {
-                throw new IOException("its header's bounds " + header.bounds() + " are not its vertices' " + mesh.bounds());
-            }
-            if (ids != null) {
-                int materials = Math.max(1, header.materials().size());
-                for (int id : ids) {
-                    if (id < 0 || id >= materials) {
-                        throw new IOException("a triangle has material id " + id + " of " + materials);
-                    }
-                }
-            }
-            if (bvh.primitiveCount() != header.triangles()) {
-                throw new IOException("its tree holds " + bvh.primitiveCount() + " triangles of " + header.triangles());
-            }
-            if (bvh.leafOrder() != null) {
-                throw new IOException("its tree is not in the mesh's order");
-            }
-            return new Contents(header, mesh, bvh);
-        }
-    }
-
-    /** Vertex coordinates: finite and within what a triangle holds ({@link Triangle#MAX_COORDINATE}), as the OBJ reader requires. */
-    private static void requireFinite(double[] values, String what) throws IOException {
-        for (double v : values) {
-            if (!(Math.abs(v) <= Triangle.MAX_COORDINATE)) {
-                throw new IOException("a " + what + " coordinate is " + v);
-            }
-        }
-    }
-
-    private static void requireFinite(float[] values, String what) throws IOException {
-        if (values != null) {
-            for (float v : values) {
-                if (!Float.isFinite(v)) {
-                    throw new IOException("a " + what + " is not finite");
-                }
             }
         }
     }
@@ -295,20 +198,6 @@ final class MeshCacheFile {
         }
     }
 
-    private static float[] getFloats(ChecksummedInput in, int n) {
-        float[] values = new float[n];
-        in.getFloats(values);
-        in.align();
-        return values;
-    }
-
-    private static int[] getInts(ChecksummedInput in, int n) {
-        int[] values = new int[n];
-        in.getInts(values);
-        in.align();
-        return values;
-    }
-
     private static int align(int position) {
         return (position + 7) & ~7;
     }
@@ -316,5 +205,4 @@ final class MeshCacheFile {
     private static long align(long bytes) {
         return (bytes + 7) & ~7L;
     }
-
 }

@@ -1,4 +1,4 @@
-package raytracer.io.scene;
+package raytracer.cache;
 
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -12,46 +12,45 @@ import java.util.Set;
 import java.util.TreeSet;
 import raytracer.cache.ContentStamp;
 import raytracer.io.obj.ObjMaterial;
-import raytracer.io.scene.MeshCacheFile.Header;
 import raytracer.math.BBox;
 
 /**
- * The header of a mesh cache file in bytes ({@link java.io.DataOutput} form): the stamps of the OBJ
- * and MTL files it was made from, the options, the counts, the bounds, the MTL materials and which
- * of them are open sheets. Apart from {@link MeshCacheFile} so that the layout of the arrays reads
- * on its own.
+ * What a mesh cache file says before its arrays: the OBJ and the MTL files it was made from, the
+ * options it was made with, the figures --stats prints, the mesh's exact bounds (for the scene
+ * analysis), its MTL materials and which of them are open sheets ({@link raytracer.io.obj.ObjModel#sheets});
+ * and its bytes ({@link java.io.DataOutput} form), apart from {@link MeshCacheFile} so that the
+ * layout of the arrays reads on its own.
  */
-final class MeshCacheHeader {
-    private MeshCacheHeader() {
-    }
+public record MeshCacheHeader(ContentStamp source, String options, List<ContentStamp> libraries, int faces, int ngons, int vertices,
+                              int triangles, boolean normals, boolean uvs, boolean materialIds, BBox bounds,
+                              List<ObjMaterial> materials, Set<Integer> sheets) {
 
     /** The header's bytes; texture paths are written relative to {@code folder}, the OBJ file's. */
-    static byte[] encode(Header h, Path folder) throws IOException {
+    byte[] encode(Path folder) throws IOException {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         DataOutputStream out = new DataOutputStream(bytes);
-        writeStamp(out, h.source());
-        out.writeUTF(h.options());
-        out.writeInt(h.libraries().size());
-        for (ContentStamp library : h.libraries()) {
+        writeStamp(out, source);
+        out.writeUTF(options);
+        out.writeInt(libraries.size());
+        for (ContentStamp library : libraries) {
             writeStamp(out, library);
         }
-        out.writeInt(h.faces());
-        out.writeInt(h.ngons());
-        out.writeInt(h.vertices());
-        out.writeInt(h.triangles());
-        out.writeBoolean(h.normals());
-        out.writeBoolean(h.uvs());
-        out.writeBoolean(h.materialIds());
-        BBox b = h.bounds();
-        for (double v : new double[] {b.x0(), b.y0(), b.z0(), b.x1(), b.y1(), b.z1()}) {
+        out.writeInt(faces);
+        out.writeInt(ngons);
+        out.writeInt(vertices);
+        out.writeInt(triangles);
+        out.writeBoolean(normals);
+        out.writeBoolean(uvs);
+        out.writeBoolean(materialIds);
+        for (double v : new double[] {bounds.x0(), bounds.y0(), bounds.z0(), bounds.x1(), bounds.y1(), bounds.z1()}) {
             out.writeDouble(v);
         }
-        out.writeInt(h.materials().size());
-        for (ObjMaterial m : h.materials()) {
+        out.writeInt(materials.size());
+        for (ObjMaterial m : materials) {
             writeMaterial(out, m, folder);
         }
-        out.writeInt(h.sheets().size());
-        for (int id : h.sheets()) {
+        out.writeInt(sheets.size());
+        for (int id : sheets) {
             out.writeInt(id);
         }
         out.flush();
@@ -59,7 +58,7 @@ final class MeshCacheHeader {
     }
 
     /** The header of its bytes; texture paths are resolved against {@code folder}, the OBJ file's now. */
-    static Header decode(byte[] head, Path folder) throws IOException {
+    static MeshCacheHeader decode(byte[] head, Path folder) throws IOException {
         DataInputStream in = new DataInputStream(new ByteArrayInputStream(head));
         ContentStamp source = readStamp(in);
         String options = in.readUTF();
@@ -91,7 +90,7 @@ final class MeshCacheHeader {
         if (vertices < 0 || triangles < 1) {
             throw new IOException("its header counts " + vertices + " vertices and " + triangles + " triangles");
         }
-        return new Header(source, options, libraries, faces, ngons, vertices, triangles, normals, uvs, ids, bounds,
+        return new MeshCacheHeader(source, options, libraries, faces, ngons, vertices, triangles, normals, uvs, ids, bounds,
                           materials, Set.copyOf(sheets));
     }
 

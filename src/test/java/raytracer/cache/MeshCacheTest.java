@@ -1,4 +1,4 @@
-package raytracer.io.scene;
+package raytracer.cache;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -24,6 +24,10 @@ import raytracer.accel.MeshBVH;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
+import raytracer.io.scene.LoadReport;
+import raytracer.io.scene.LoadedScene;
+import raytracer.io.scene.SceneException;
+import raytracer.io.scene.SceneLoader;
 import raytracer.math.BBox;
 import raytracer.render.SceneAnalysis;
 import raytracer.render.Renders;
@@ -219,9 +223,9 @@ class MeshCacheTest {
     }
 
     /**
-     * Issue 25, item 5: the header is checked with everything else before any of it is used. Before,
-     * bounds moved out of view made the scene analysis leave the mesh out, so the entry was never
-     * read and never failed its checksum: the mesh was missing from every image without a word; a
+     * The header is checked with everything else before any of it is used. Before, bounds moved
+     * out of view made the scene analysis leave the mesh out, so the entry was never read and never
+     * failed its checksum: the mesh was missing from every image without a word; a
      * damaged Kd warned "parsed again" but rendered with the header's colour.
      */
     @Test
@@ -245,7 +249,7 @@ class MeshCacheTest {
     }
 
     /**
-     * Issue 25, item 6: an entry is read once. Before, its header was read when the scene was loaded
+     * An entry is read once. Before, its header was read when the scene was loaded
      * and its arrays when it was prepared, through two opens: an entry replaced in between rendered
      * one version's geometry with the other's materials and bounds, silently.
      */
@@ -273,7 +277,7 @@ class MeshCacheTest {
     }
 
     /**
-     * Issue 25, item 13: a rewritten entry gets the umask's permissions, not those of what it
+     * A rewritten entry gets the umask's permissions, not those of what it
      * replaces. Before, a mode-000 entry was rebuilt every run with mode 000 again (for anyone but
      * root: a warning each time, never healing), and an entry that was a link to a world-writable
      * file was rewritten world-writable.
