@@ -22,9 +22,9 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * Keeps the layering of STYLE.md honest: dependencies point down the chain math &lt;- core &lt;-
- * families &lt;- image, render, io.obj, io.scene &lt;- cli, families do not use each other (but for
- * the listed exceptions), render sees only core, math and image. A dependency is any name of a
+ * Keeps the layering of docs/architecture.md honest: dependencies point down the chain math &lt;-
+ * core &lt;- families &lt;- image, render, io.obj, io.scene, cache &lt;- api &lt;- cli, families do not
+ * use each other (but for the listed exceptions), render sees only core, math and image. A dependency is any name of a
  * class of another package: read from the source with comments and string literals taken out (so
  * an import, a fully qualified name written inline, and a constant the compiler copies into the
  * caller all count), and from the compiled class's constant pool (so a type used without being
@@ -79,8 +79,15 @@ class ArchitectureTest {
         Map.entry("study", Set.of("math", "core", "brdf", "materials", "lights", "tracers", "render")),
         // a scene file and a render's options made into a scene to render, for the command line and the Spark job
         Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene", "cache"))),
+        // the command line: the top command and what its programs share (options, errors, terminal, progress) in cli,
+        // which dispatches to the programs: render's run, converge, and render's --show window
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",
-                                                 "image.chart", "api", "cache"))));
+                                                 "image.chart", "api", "cache", "cli.render", "cli.converge", "cli.show"))),
+        Map.entry("cli.render", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene", "api", "cli", "cli.show"))),
+        // converge warns of dropped samples as render's run report does
+        Map.entry("cli.converge", union(FAMILIES, Set.of("math", "core", "image", "image.chart", "render", "io.scene", "reference",
+                                                          "api", "cache", "cli", "cli.render"))),
+        Map.entry("cli.show", Set.of("image", "render", "cli")));
 
     private static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> all = new HashSet<>(a);

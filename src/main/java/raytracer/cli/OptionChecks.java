@@ -5,8 +5,13 @@ import java.util.Map;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
+import raytracer.api.FrameFiles;
+import raytracer.api.FrameRange;
+import raytracer.api.OutputFile;
 import raytracer.api.SceneOptions;
 import raytracer.cache.MeshCache;
+import raytracer.cli.render.RenderRequest;
+import raytracer.cli.show.GraphicalDisplay;
 import raytracer.render.Workers;
 
 /**

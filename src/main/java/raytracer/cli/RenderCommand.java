@@ -5,11 +5,14 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import raytracer.cli.converge.ConvergeCommand;
+import raytracer.cli.render.RenderRequest;
+import raytracer.cli.render.RenderRun;
 import raytracer.render.Workers;
 
 /**

@@ -115,11 +115,11 @@ final class Outputs {
 
     /**
      * Why {@code target} must not be written because the frame read it (a texture, a mesh named as
-     * the output: the rule of {@code render}, {@link raytracer.cli.OutputFile#whyInput}), or null.
+     * the output: the rule of {@code render}, {@link raytracer.api.OutputFile#whyInput}), or null.
      */
     static String whyInput(String target, java.util.Collection<java.nio.file.Path> inputs) {
         java.nio.file.Path local = localFile(target);
-        String why = local == null ? null : raytracer.cli.OutputFile.whyInput(local, null, inputs);
+        String why = local == null ? null : raytracer.api.OutputFile.whyInput(local, null, inputs);
         return why == null ? null : "cannot write " + target + ": " + why;
     }
 }
