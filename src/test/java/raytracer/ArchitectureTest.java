@@ -41,6 +41,9 @@ class ArchitectureTest {
     private static final Pattern BINARY_REFERENCE =
         Pattern.compile("(?<![A-Za-z0-9_$/])L?raytracer((?:/[a-z][a-z0-9_]*)+)/[A-Z]");
 
+    /** A class of the command line's packages, named in a source. */
+    private static final Pattern CLI_CLASS = Pattern.compile("\\braytracer\\.cli(?:\\.[a-z]+)*\\.[A-Z]\\w*");
+
     private static final Set<String> FAMILIES = Set.of("samplers", "cameras", "shapes", "shapes.mesh", "accel", "brdf",
                                                        "btdf", "textures", "materials", "lights", "tracers", "filters");
 
@@ -314,8 +317,8 @@ class ArchitectureTest {
 
     /**
      * The Spark job (src/spark/java, its own source set and jar) sits above the command line: it
-     * renders through the API and spells its options as render does; nothing in src/main uses it
-     * (the main classes compile without Spark).
+     * renders through the API and takes its options from render's (the only classes of the command
+     * line it names); nothing in src/main uses it (the main classes compile without Spark).
      */
     @Test
     void theSparkJobUsesTheApiAndNothingUsesIt() throws IOException {
@@ -341,6 +344,18 @@ class ArchitectureTest {
             }
         }
         assertTrue(files >= 5, "the Spark job's sources were not found in " + spark.toAbsolutePath());
+        // of the command line, only what it shares on purpose: render's options and the terminal's escaping
+        Set<String> sharedCli = Set.of("raytracer.cli.RenderOptions", "raytracer.cli.ImageOptions", "raytracer.cli.Terminal");
+        try (Stream<Path> paths = Files.walk(spark)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                Matcher named = CLI_CLASS.matcher(codeOnly(Files.readString(file)));
+                while (named.find()) {
+                    if (!sharedCli.contains(named.group())) {
+                        violations.add(file + " uses " + named.group() + ", which the command line does not share");
+                    }
+                }
+            }
+        }
         assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", violations));
     }
 

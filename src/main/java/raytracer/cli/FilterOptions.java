@@ -3,8 +3,8 @@ package raytracer.cli;
 import picocli.CommandLine.Option;
 import raytracer.api.FilterChoice;
 
-/** The pixel-filter options that render and converge share (a picocli mixin). */
-public final class FilterOptions {
+/** The pixel-filter options, two of {@link RenderOptions}' (a picocli mixin within it). */
+final class FilterOptions {
     @Option(names = "--filter", paramLabel = "NAME", completionCandidates = OptionNames.FilterNames.class,
             description = "How pixels are made from samples (overrides the scene): ${COMPLETION-CANDIDATES}. box is the book's "
                           + "(the average of the pixel's own samples), gaussian has a standard deviation of 0.5 pixel and a radius "
@@ -16,7 +16,7 @@ public final class FilterOptions {
     Double filterStddev;
 
     /** The two options checked together; IllegalArgumentException says what is wrong. */
-    public FilterChoice choice() {
+    FilterChoice choice() {
         return FilterChoice.parse(filter, filterStddev);
     }
 }

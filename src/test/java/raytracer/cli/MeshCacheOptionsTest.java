@@ -142,11 +142,10 @@ class MeshCacheOptionsTest {
         RenderCommandTest.Result bad = render(dir.resolve("b"), cache.toString(), "--cache-max", "lots");
         assertEquals(ErrorReport.BAD_USAGE, bad.code());
         assertTrue(bad.err().contains("--cache-max: a size such as 512M or 2G is expected, got 'lots'"), bad.err());
-        OptionChecks checks = new OptionChecks(new picocli.CommandLine(new RenderCommand()));
-        assertEquals(3L << 30, checks.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")));
-        assertEquals(1L << 20, checks.cacheMax("1M", java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")), "the option wins");
-        picocli.CommandLine.ParameterException e = org.junit.jupiter.api.Assertions.assertThrows(
-            picocli.CommandLine.ParameterException.class, () -> checks.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "x")));
+        assertEquals(3L << 30, RenderOptions.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")));
+        assertEquals(1L << 20, RenderOptions.cacheMax("1M", java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")), "the option wins");
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(
+            IllegalArgumentException.class, () -> RenderOptions.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "x")));
         assertTrue(e.getMessage().startsWith("RAYTRACER_MESH_CACHE_MAX: "), e.getMessage());
     }
 }

@@ -9,8 +9,10 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
+import raytracer.api.SceneFrame;
 import raytracer.cache.ContentStamp;
 import raytracer.cache.ReferenceCache;
+import raytracer.core.RayTreeSettings;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
 import raytracer.image.ErrorMetrics;
@@ -18,7 +20,6 @@ import raytracer.image.FileKind;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 import raytracer.io.scene.ClosedFormReader;
-import raytracer.io.scene.LoadedScene;
 import raytracer.io.scene.SceneException;
 import raytracer.reference.LitPlane;
 import raytracer.render.RenderStats;
@@ -34,6 +35,44 @@ final class ConvergeReference {
     static final int CLOSED_FORM_ORDER = 8;
 
     private ConvergeReference() {
+    }
+
+    /**
+     * The reference --reference asks for, of the prepared frame {@code base}: a .pfm file, the
+     * scene's exact image (auto, when it has one and the filter is the box), or the scene rendered
+     * (self, and auto otherwise, with seeds made from the measured renders' {@code seed}), read
+     * from {@code cache} when it is there (null: --no-cache).
+     */
+    static Image choose(ConvergeCommand command, SceneFrame base, long seed, ReferenceCache cache, Renderings render, PrintWriter note)
+            throws Exception {
+        String reference = command.reference;
+        Path scene = command.scene;
+        ViewPlane vp = base.world().viewPlane();
+        if (!List.of("auto", "closed-form", "self").contains(reference)) {
+            Film film = fromFile(Path.of(reference), vp.hres(), vp.vres());
+            note.println("converge: reference: " + reference);
+            return new Image(film, Double.NaN, reference);
+        }
+        if (!vp.filter().isBox()) {
+            // the exact images are averages over each pixel's square: a box-filtered image
+            if (reference.equals("closed-form")) {
+                throw new IOException("--reference closed-form: the exact image is of box-filtered pixels, and this run's filter is "
+                                      + vp.filter().name() + "; use --filter box, or --reference self");
+            }
+            if (reference.equals("auto") && hasClosedForm(scene)) {
+                note.println("converge: reference: the exact image is of box-filtered pixels, not " + vp.filter().name()
+                             + "; rendering one instead");
+            }
+        } else if (!reference.equals("self")) {
+            Optional<Image> exact = closedForm(scene, vp.hres(), vp.vres(), note, reference.equals("closed-form"));
+            if (exact.isPresent()) {
+                return exact.get();
+            }
+        }
+        if (cache != null) {
+            cache.checkFolder();
+        }
+        return rendered(scene, Files.readAllBytes(scene), base, command.referenceSpp, ~seed, cache, render, note);
     }
 
     /** A .pfm file of the image's size with finite values; anything else is an IOException naming the file. */
@@ -120,14 +159,15 @@ final class ConvergeReference {
      * seeds {@code seed} and {@code seed ^ OTHER_HALF}, averaged; the halves' difference measures the
      * average's own noise: with independent halves of equal variance, its RMSE is RMSE(a, b) / 2.
      * Read from the cache when it is there and stored in it when not ({@code cache} null: neither);
-     * {@code frame} is the frame of an animated scene that {@code loaded} holds, part of the cache's key.
+     * the frame number of an animated scene is part of the cache's key.
      */
-    static Image rendered(Path scene, byte[] sceneBytes, int frame, LoadedScene loaded, int spp, long seed, ReferenceCache cache,
+    static Image rendered(Path scene, byte[] sceneBytes, SceneFrame loaded, int spp, long seed, ReferenceCache cache,
                           Renderings render, PrintWriter note) throws IOException {
         World world = loaded.world();
         ViewPlane vp = world.viewPlane().withSamples(Math.max(1, spp / 2));
         world.setViewPlane(vp);
-        LoadedScene whole = new LoadedScene(world, loaded.rayTree().withCutoff(0), loaded.encoding(), loaded.report());
+        RayTreeSettings whole = loaded.rayTree().withCutoff(0);
+        int frame = loaded.number();
         long other = seed ^ OTHER_HALF;
         String settings = "width=" + vp.hres() + "\nheight=" + vp.vres() + "\nspp=2 x " + vp.numSamples() + "\nseeds=" + seed + ", "
                           + other + "\ncutoff=0\nsampler=" + Samplers.nameOf(vp.sampler()) + "\nexposure=" + vp.exposure() + "\n"
@@ -146,8 +186,8 @@ final class ConvergeReference {
         note.printf("converge: rendering the reference: 2 x %d spp, seeds %d and %d, no cutoff%n", vp.numSamples(), seed, other);
         Film a = new Film(vp.hres(), vp.vres());
         Film b = new Film(vp.hres(), vp.vres());
-        double seconds = render.render(whole, a, seed, "reference, half 1 of 2").seconds()
-                         + render.render(whole, b, other, "reference, half 2 of 2").seconds();
+        double seconds = render.render(world, whole, seed, a, "reference, half 1 of 2").seconds()
+                         + render.render(world, whole, other, b, "reference, half 2 of 2").seconds();
         a = scaled(a, vp.exposure());
         b = scaled(b, vp.exposure());
         double noiseRmse = ErrorMetrics.compare(a, 1, b).rmse() / 2;
@@ -187,10 +227,10 @@ final class ConvergeReference {
         return lines.toString();
     }
 
-    /** How the command renders: into a film, with a seed, a progress label, returning what it cost. */
+    /** How the command renders: a world with its ray tree and a seed, into a film, under a progress label, returning what it cost. */
     @FunctionalInterface
     interface Renderings {
-        RenderStats render(LoadedScene scene, Film film, long seed, String label);
+        RenderStats render(World world, RayTreeSettings rayTree, long seed, Film film, String label);
     }
 
     /** The film times {@code exposure}, as a .pfm of it would hold it. */

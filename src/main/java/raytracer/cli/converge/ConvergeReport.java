@@ -30,10 +30,14 @@ final class ConvergeReport {
                              referenceMean > 0 ? String.format(Locale.ROOT, " (relative %.4g)", noise / referenceMean) : "");
     }
 
-    /** The area lights' samples per shaded point as the renderer takes them (rounded for the sampler); "-" without area lights. */
+    /**
+     * The area lights' samples per shaded point as the renderer takes them (rounded for the
+     * sampler), of the lights the scene has (before the scene analysis leaves any out); "-" without
+     * area lights.
+     */
     static String lightSamples(World world) {
         TreeSet<Integer> counts = new TreeSet<>();
-        for (Light light : world.lights()) {
+        for (Light light : world.lightList()) {
             if (light.hasExtent()) {
                 counts.add(world.viewPlane().sampler().supportedCount(light.sampleCount()));
             }

@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -15,6 +17,7 @@ import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cli.RenderCommand;
 import raytracer.cli.RenderCommandTest;
 import raytracer.cli.RenderCommandTest.Result;
 import raytracer.image.Film;
@@ -83,8 +86,8 @@ class ConvergeCommandTest {
             assertTrue(at16 < at1 / 2.5, "relative RMSE at 1 spp " + at1 + ", at 16 spp " + at16);
         }
         BufferedImage image = ImageIO.read(plot.toFile());
-        assertEquals(ConvergeCommand.PLOT_WIDTH, image.getWidth());
-        assertEquals(ConvergeCommand.PLOT_HEIGHT, image.getHeight());
+        assertEquals(ConvergeRun.PLOT_WIDTH, image.getWidth());
+        assertEquals(ConvergeRun.PLOT_HEIGHT, image.getHeight());
     }
 
     @Test
@@ -145,8 +148,7 @@ class ConvergeCommandTest {
     }
 
     /**
-     * Issue 25, item 10: a cached reference is used only when it matches the checksum its
-     * description holds. Before, a NaN pixel in it gave an RMSE of NaN and exit 0, and a changed
+     * A cached reference is used only when it matches the checksum its entry holds. Before, a NaN pixel in it gave an RMSE of NaN and exit 0, and a changed
      * value was reused silently; and --cache naming a file failed only after the reference was rendered.
      */
     @Test
@@ -298,6 +300,34 @@ class ConvergeCommandTest {
         double l = Double.parseDouble(rows(linearCsv).get(0)[5]);
         double s = Double.parseDouble(rows(srgbCsv).get(0)[5]);
         assertTrue(l > 0 && s > 0 && Math.abs(l - s) > 0.01 * l, "relative RMSE linear " + l + ", sRGB " + s);
+    }
+
+    /**
+     * converge takes render's options, declared and checked once for both: the mesh cache among
+     * them, which before it did not have (each configuration parsed every mesh again, every run).
+     */
+    @Test
+    void theOptionsSharedWithRenderIncludeTheMeshCache() throws IOException {
+        // a quad, and enough copies of its face to be worth caching
+        write("quad.obj", "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\n" + "f 1 2 3 4\n".repeat(25_000));
+        Path scene = write("mesh.yaml", SPHERES.replace("- {type: plane, normal: [0, 1, 0]}", "- {type: mesh, file: quad.obj}"));
+        Path meshes = dir.resolve("meshes");
+        Result r = converge(scene.toString(), "--spp", "1", "--config", "sampler=random/jittered", "--reference-spp", "4",
+                            "--cache", dir.resolve("references").toString(), "--cache-dir", meshes.toString(), "--accel", "sah",
+                            "--max-depth", "2", "-q", "--plot", dir.resolve("m.png").toString());
+        assertEquals(0, r.code(), r.err());
+        try (Stream<Path> files = Files.list(meshes)) {
+            assertEquals(1, files.filter(p -> p.toString().endsWith(".mesh")).count(), "one entry for the base and both curves");
+        }
+        assertOneLine(converge(scene.toString(), "--no-cache", "--cache-dir", meshes.toString()), 2,
+                      "--no-cache and --cache-dir exclude each other");
+        assertOneLine(converge(scene.toString(), "--cache-max", "lots"), 2, "--cache-max: a size such as 512M or 2G is expected");
+        assertOneLine(converge(scene.toString(), "-W", "0"), 2, "--width must be at least 1, got 0");
+        assertOneLine(converge(scene.toString(), "--sampler", "poisson-disk"), 2, "unknown sampler 'poisson-disk'");
+        StringWriter help = new StringWriter();
+        assertEquals(0, RenderCommand.run(new PrintWriter(help, true), new PrintWriter(new StringWriter(), true), "converge", "--help"));
+        assertTrue(help.toString().contains("--cache-dir=DIR") && help.toString().contains("Neither read nor write cached references or meshes")
+                   && help.toString().contains("Seed of the measured renders"), help.toString());
     }
 
     @Test

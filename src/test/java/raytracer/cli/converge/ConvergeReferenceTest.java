@@ -9,14 +9,14 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.OptionalInt;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import raytracer.core.World;
+import raytracer.api.Scene;
+import raytracer.api.SceneFrame;
+import raytracer.api.SceneOptions;
 import raytracer.image.ErrorMetrics;
-import raytracer.io.scene.LoadedScene;
-import raytracer.io.scene.SceneLoader;
 import raytracer.render.Renders;
+import raytracer.render.Workers;
 
 /** A self-rendered reference measures its own noise truly: checked against the exact image of a closed-form scene. */
 class ConvergeReferenceTest {
@@ -24,12 +24,13 @@ class ConvergeReferenceTest {
     @Test
     void theHalvesDifferenceEstimatesTheReferencesTrueError() throws Exception {
         Path file = Path.of("scenes", "closed-form-disk.yaml");
-        LoadedScene scene = SceneLoader.load(file, OptionalInt.empty());
-        World world = scene.world();
-        world.setViewPlane(world.viewPlane().withResolution(24, 24));
-        world.prepare();
-        ConvergeReference.Image ref = ConvergeReference.rendered(file, Files.readAllBytes(file), 0, scene, 128, 5, null,
-            (s, film, seed, label) -> Renders.render(s.world(), s.rayTree(), 2, seed, film), new PrintWriter(new StringWriter()));
+        ConvergeReference.Image ref;
+        try (Workers workers = new Workers(2)) {
+            SceneFrame frame = Scene.open(file, SceneOptions.NONE.withSize(24, 24)).load(0, workers);
+            frame.prepare(workers);
+            ref = ConvergeReference.rendered(file, Files.readAllBytes(file), frame, 128, 5, null,
+                (world, rayTree, seed, film, label) -> Renders.render(world, rayTree, 2, seed, film), new PrintWriter(new StringWriter()));
+        }
         var exact = ConvergeReference.closedForm(file, 24, 24, new PrintWriter(new StringWriter()), true).get();
         double trueRmse = ErrorMetrics.compare(ref.film(), 1, exact.film()).rmse();
         // 576 pixels: the two estimates of one variance agree to about 10%

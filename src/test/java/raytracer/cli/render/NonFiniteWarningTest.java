@@ -19,7 +19,7 @@ import raytracer.render.RenderStats;
 import raytracer.render.Renders;
 
 /**
- * Dropped samples are a warning line of their own, which --quiet keeps (issue 25, item 9): before,
+ * Dropped samples are a warning line of their own, which --quiet keeps: before,
  * the only sign was ", WARNING: 540 non-finite samples dropped" at the end of the summary line,
  * which -q hides, and the MTL values that caused them rendered with exit 0.
  */
