@@ -22,9 +22,9 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
- * Keeps the layering of STYLE.md honest: dependencies point down the chain math &lt;- core &lt;-
- * families &lt;- image, render, io.obj, io.scene &lt;- cli, families do not use each other (but for
- * the listed exceptions), render sees only core, math and image. A dependency is any name of a
+ * Keeps the layering of docs/architecture.md honest: dependencies point down the chain math &lt;-
+ * core &lt;- families &lt;- image, render, io.obj, io.scene, cache &lt;- api &lt;- cli, families do not
+ * use each other (but for the listed exceptions), render sees only core, math and image. A dependency is any name of a
  * class of another package: read from the source with comments and string literals taken out (so
  * an import, a fully qualified name written inline, and a constant the compiler copies into the
  * caller all count), and from the compiled class's constant pool (so a type used without being
@@ -40,6 +40,9 @@ class ArchitectureTest {
      */
     private static final Pattern BINARY_REFERENCE =
         Pattern.compile("(?<![A-Za-z0-9_$/])L?raytracer((?:/[a-z][a-z0-9_]*)+)/[A-Z]");
+
+    /** A class of the command line's packages, named in a source. */
+    private static final Pattern CLI_CLASS = Pattern.compile("\\braytracer\\.cli(?:\\.[a-z]+)*\\.[A-Z]\\w*");
 
     private static final Set<String> FAMILIES = Set.of("samplers", "cameras", "shapes", "shapes.mesh", "accel", "brdf",
                                                        "btdf", "textures", "materials", "lights", "tracers", "filters");
@@ -66,8 +69,9 @@ class ArchitectureTest {
         Map.entry("image.chart", Set.of("image")),
         // exact images, computed apart from the renderer's code so that they can check it
         Map.entry("reference", Set.of("math", "image")),
-        // folders of files kept between runs: writing through a temporary file is image's AtomicFile
-        Map.entry("cache", Set.of("image")),
+        // files kept between runs: parsed meshes with their trees (the OBJ reader's model in the mesh and
+        // BVH layouts) and converge's references (images); writing through a temporary file is image's AtomicFile
+        Map.entry("cache", Set.of("math", "image", "shapes", "shapes.mesh", "accel", "io.obj")),
         Map.entry("render", Set.of("math", "core", "image")),
         Map.entry("io.obj", union(FAMILIES, Set.of("math", "core", "image"))),
         // a PLY file is one mesh and nothing else (with the triangle's bound on coordinates)
@@ -75,9 +79,16 @@ class ArchitectureTest {
         // a scene's mesh objects are OBJ files: the scene reader uses the OBJ reader, not the reverse
         Map.entry("io.scene", union(FAMILIES, Set.of("math", "core", "image", "io.obj", "io.ply", "reference", "cache"))),
         // a scene file and a render's options made into a scene to render, for the command line and the Spark job
-        Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene"))),
+        Map.entry("api", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene", "cache"))),
+        // the command line: the top command and what its programs share (options, errors, terminal, progress) in cli,
+        // which dispatches to the programs: render's run, converge, and render's --show window
         Map.entry("cli", union(FAMILIES, Set.of("math", "core", "image", "render", "io.obj", "io.ply", "io.scene", "reference",
-                                                 "image.chart", "api", "cache"))));
+                                                 "image.chart", "api", "cache", "cli.render", "cli.converge", "cli.show"))),
+        Map.entry("cli.render", union(FAMILIES, Set.of("math", "core", "image", "render", "io.scene", "api", "cli", "cli.show"))),
+        // converge warns of dropped samples as render's run report does
+        Map.entry("cli.converge", union(FAMILIES, Set.of("math", "core", "image", "image.chart", "render", "io.scene", "reference",
+                                                          "api", "cache", "cli", "cli.render"))),
+        Map.entry("cli.show", Set.of("image", "render", "cli")));
 
     private static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> all = new HashSet<>(a);
@@ -304,8 +315,8 @@ class ArchitectureTest {
 
     /**
      * The Spark job (src/spark/java, its own source set and jar) sits above the command line: it
-     * renders through the API and spells its options as render does; nothing in src/main uses it
-     * (the main classes compile without Spark).
+     * renders through the API and takes its options from render's (the only classes of the command
+     * line it names); nothing in src/main uses it (the main classes compile without Spark).
      */
     @Test
     void theSparkJobUsesTheApiAndNothingUsesIt() throws IOException {
@@ -331,6 +342,18 @@ class ArchitectureTest {
             }
         }
         assertTrue(files >= 5, "the Spark job's sources were not found in " + spark.toAbsolutePath());
+        // of the command line, only what it shares on purpose: render's options and the terminal's escaping
+        Set<String> sharedCli = Set.of("raytracer.cli.RenderOptions", "raytracer.cli.ImageOptions", "raytracer.cli.Terminal");
+        try (Stream<Path> paths = Files.walk(spark)) {
+            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                Matcher named = CLI_CLASS.matcher(codeOnly(Files.readString(file)));
+                while (named.find()) {
+                    if (!sharedCli.contains(named.group())) {
+                        violations.add(file + " uses " + named.group() + ", which the command line does not share");
+                    }
+                }
+            }
+        }
         assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", violations));
     }
 

@@ -37,9 +37,9 @@ public final class Scene {
     /** Reads the scene file {@code file}, or the embedded default scene when it is null. */
     public static Scene open(Path file, SceneOptions options) throws SceneException, IOException {
         if (file == null) {
-            return new Scene(SceneFile.of("default scene", defaultSceneText()), options);
+            return new Scene(SceneFile.of("default scene", defaultSceneText(), options.areaLightSamples()), options);
         }
-        return new Scene(SceneFile.read(file, options.openMeshCache()), options);
+        return new Scene(SceneFile.read(file, options.openMeshCache(), options.areaLightSamples()), options);
     }
 
     /**
@@ -47,8 +47,8 @@ public final class Scene {
      * driver sends it to its workers, which find the meshes and images relative to {@code file}).
      */
     public static Scene of(Path file, String text, SceneOptions options) throws SceneException {
-        return new Scene(file == null ? SceneFile.of("default scene", text) : SceneFile.of(file, text, options.openMeshCache()),
-                         options);
+        return new Scene(file == null ? SceneFile.of("default scene", text, options.areaLightSamples())
+                         : SceneFile.of(file, text, options.openMeshCache(), options.areaLightSamples()), options);
     }
 
     /** The embedded default scene's text. */

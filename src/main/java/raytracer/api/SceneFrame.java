@@ -72,6 +72,11 @@ public final class SceneFrame {
         return loaded.world();
     }
 
+    /** How much of the ray tree this frame traces: the scene's, with the options applied. */
+    public RayTreeSettings rayTree() {
+        return rayTree;
+    }
+
     public ImageSettings image() {
         return image;
     }

@@ -2,20 +2,23 @@ package raytracer.api;
 
 import java.io.Serializable;
 import java.nio.file.Path;
+import java.util.OptionalInt;
+import java.util.function.Consumer;
 import raytracer.accel.Aggregation;
+import raytracer.cache.MeshCache;
+import raytracer.core.PixelFilter;
 import raytracer.core.RayTreeSettings;
 import raytracer.core.Sampler;
 import raytracer.core.ShadingPass;
 import raytracer.core.ViewPlane;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
-import raytracer.io.scene.MeshCache;
 import raytracer.samplers.Samplers;
 
 /**
  * What a render changes in a scene file's settings, and how it searches and caches the scene: the
- * command line's options (render's and the Spark job's alike), so that an option means the same
- * wherever the scene is prepared. Plain names and numbers, checked when made (an
+ * command line's options (render's, converge's and the Spark job's alike), so that an option means
+ * the same wherever the scene is prepared. Plain names and numbers, checked when made (an
  * IllegalArgumentException names the option as the command line spells it), and serializable, so
  * a render farm's driver can send them to its workers. A null value leaves the scene's.
  *
@@ -28,6 +31,7 @@ import raytracer.samplers.Samplers;
  * @param pass the first hit's terms (--pass)
  * @param cutoff the ray tree's cutoff (--cutoff)
  * @param encoding the PNG's encoding (--encoding)
+ * @param lightSamples every area light's samples per shaded point, in place of its own (converge's light-samples)
  * @param accel how the objects are searched (--accel; never null)
  * @param analyse false for --no-skip: the scene analysis does not run
  * @param costView true for --view bvh-cost
@@ -36,19 +40,20 @@ import raytracer.samplers.Samplers;
  * @param meshCacheMax the bytes the mesh cache's entries may take together
  */
 public record SceneOptions(Integer width, Integer height, Integer samples, String sampler, FilterChoice filter, Integer maxDepth,
-                           String pass, Double cutoff, String encoding, String accel, boolean analyse, boolean costView, long seed,
-                           String meshCache, long meshCacheMax) implements Serializable {
-    private static final long serialVersionUID = 1L;
+                           String pass, Double cutoff, String encoding, Integer lightSamples, String accel, boolean analyse,
+                           boolean costView, long seed, String meshCache, long meshCacheMax) implements Serializable {
+    private static final long serialVersionUID = 2L;
 
     /** The scene as its file gives it, the default search and seed, and no mesh cache. */
     public static final SceneOptions NONE = new SceneOptions(null, null, null, null, new FilterChoice(null, null), null, null, null,
-                                                             null, "auto", true, false, 1, null, MeshCache.DEFAULT_MAX_BYTES);
+                                                             null, null, "auto", true, false, 1, null, MeshCache.DEFAULT_MAX_BYTES);
 
     public SceneOptions {
         requireAtLeast("--width", width, 1);
         requireAtLeast("--height", height, 1);
         requireWithin("--spp", samples, 1, Sampler.MAX_SAMPLES);
         requireWithin("--max-depth", maxDepth, 0, ViewPlane.MAX_DEPTH);
+        requireWithin("light-samples", lightSamples, 1, Sampler.MAX_SAMPLES);
         if (cutoff != null && !(cutoff >= 0 && cutoff < 1)) {
             throw new IllegalArgumentException("--cutoff must be in [0, 1), got " + cutoff);
         }
@@ -99,26 +104,39 @@ public record SceneOptions(Integer width, Integer height, Integer samples, Strin
 
     /** These options with the image's size set to {@code width} x {@code height}. */
     public SceneOptions withSize(int width, int height) {
-        return new SceneOptions(width, height, samples, sampler, filter, maxDepth, pass, cutoff, encoding, accel, analyse, costView, seed,
-                                meshCache, meshCacheMax);
+        return edit(o -> {
+            o.width = width;
+            o.height = height;
+        });
     }
 
     /** These options with {@code samples} per pixel. */
     public SceneOptions withSamples(int samples) {
-        return new SceneOptions(width, height, samples, sampler, filter, maxDepth, pass, cutoff, encoding, accel, analyse, costView, seed,
-                                meshCache, meshCacheMax);
+        return edit(o -> o.samples = samples);
     }
 
     /** These options with the filter {@code name} ({@code stddev}: null for its own width). */
     public SceneOptions withFilter(String name, Double stddev) {
-        return new SceneOptions(width, height, samples, sampler, new FilterChoice(name, stddev), maxDepth, pass, cutoff, encoding, accel,
-                                analyse, costView, seed, meshCache, meshCacheMax);
+        return edit(o -> o.filter = new FilterChoice(name, stddev));
+    }
+
+    /** These options with the sample pattern {@code sampler}, the cutoff and the area lights' samples; a null keeps the value. */
+    public SceneOptions withSampling(String sampler, Double cutoff, Integer lightSamples) {
+        return edit(o -> {
+            o.sampler = sampler != null ? sampler : o.sampler;
+            o.cutoff = cutoff != null ? cutoff : o.cutoff;
+            o.lightSamples = lightSamples != null ? lightSamples : o.lightSamples;
+        });
     }
 
     /** These options with the mesh cache in {@code folder} (null: none). */
     public SceneOptions withMeshCache(Path folder) {
-        return new SceneOptions(width, height, samples, sampler, filter, maxDepth, pass, cutoff, encoding, accel, analyse, costView, seed,
-                                folder == null ? null : folder.toString(), meshCacheMax);
+        return edit(o -> o.meshCache = folder == null ? null : folder.toString());
+    }
+
+    /** These options with the mesh cache in this user's default folder on this machine ({@link MeshCache#defaultDir}). */
+    public SceneOptions withDefaultMeshCache() {
+        return withMeshCache(MeshCache.defaultDir(System.getenv(), System.getProperty("user.home")));
     }
 
     /**
@@ -141,7 +159,7 @@ public record SceneOptions(Integer width, Integer height, Integer samples, Strin
         }
         vp = vp.withFilter(filter.applyTo(vp.filter()));
         if (costView) {
-            vp = vp.withFilter(raytracer.core.PixelFilter.BOX);
+            vp = vp.withFilter(PixelFilter.BOX);
         }
         return vp;
     }
@@ -163,6 +181,11 @@ public record SceneOptions(Integer width, Integer height, Integer samples, Strin
         return encoding != null ? parseEncoding(encoding) : scene;
     }
 
+    /** The area lights' samples in place of their own, or empty for theirs. */
+    public OptionalInt areaLightSamples() {
+        return lightSamples == null ? OptionalInt.empty() : OptionalInt.of(lightSamples);
+    }
+
     public Aggregation.Mode accelMode() {
         return Aggregation.Mode.parse(accel);
     }
@@ -170,5 +193,36 @@ public record SceneOptions(Integer width, Integer height, Integer samples, Strin
     /** The mesh cache, or null without one. */
     public MeshCache openMeshCache() {
         return meshCache == null ? null : MeshCache.in(Path.of(meshCache), meshCacheMax);
+    }
+
+    /** These options with {@code change} made to a copy of their values, checked again. */
+    private SceneOptions edit(Consumer<Values> change) {
+        Values o = new Values(this);
+        change.accept(o);
+        return new SceneOptions(o.width, o.height, o.samples, o.sampler, o.filter, maxDepth, pass, o.cutoff, encoding, o.lightSamples,
+                                accel, analyse, costView, seed, o.meshCache, meshCacheMax);
+    }
+
+    /** The values a {@code with} method may change, as a copy to change. */
+    private static final class Values {
+        Integer width;
+        Integer height;
+        Integer samples;
+        String sampler;
+        FilterChoice filter;
+        Double cutoff;
+        Integer lightSamples;
+        String meshCache;
+
+        Values(SceneOptions o) {
+            width = o.width;
+            height = o.height;
+            samples = o.samples;
+            sampler = o.sampler;
+            filter = o.filter;
+            cutoff = o.cutoff;
+            lightSamples = o.lightSamples;
+            meshCache = o.meshCache;
+        }
     }
 }

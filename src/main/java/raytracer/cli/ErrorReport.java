@@ -10,11 +10,11 @@ import picocli.CommandLine.Model.OptionSpec;
  * a bad option (with a pointer to --help) and 1 for bad input or a failed render, and the stack
  * trace only with {@code --verbose}. A render cancelled from the --show window exits 130, as on SIGINT.
  */
-final class ErrorReport {
-    static final int BAD_INPUT = 1;
-    static final int BAD_USAGE = 2;
+public final class ErrorReport {
+    public static final int BAD_INPUT = 1;
+    public static final int BAD_USAGE = 2;
     /** What the JVM exits with on SIGINT (128 + 2): a render cancelled from the --show window ends as Ctrl-C ends it. */
-    static final int INTERRUPTED = 130;
+    public static final int INTERRUPTED = 130;
 
     private ErrorReport() {
     }

@@ -3,7 +3,7 @@ package raytracer.cli;
 import picocli.CommandLine.Option;
 import raytracer.api.FilterChoice;
 
-/** The pixel-filter options that render and converge share (a picocli mixin). */
+/** The pixel-filter options, two of {@link RenderOptions}' (a picocli mixin within it). */
 final class FilterOptions {
     @Option(names = "--filter", paramLabel = "NAME", completionCandidates = OptionNames.FilterNames.class,
             description = "How pixels are made from samples (overrides the scene): ${COMPLETION-CANDIDATES}. box is the book's "

@@ -1,19 +1,22 @@
 package raytracer.cli;
 
 import java.nio.file.Path;
-import java.util.Map;
 import java.util.function.Supplier;
 import picocli.CommandLine;
 import picocli.CommandLine.ParameterException;
+import raytracer.api.FrameFiles;
+import raytracer.api.FrameRange;
+import raytracer.api.OutputFile;
 import raytracer.api.SceneOptions;
-import raytracer.io.scene.MeshCache;
-import raytracer.render.Workers;
+import raytracer.cli.render.RenderRequest;
+import raytracer.cli.show.GraphicalDisplay;
 
 /**
- * Checks the option values that picocli's types cannot (ranges, names, the output file) and parses
- * them into a {@link RenderRequest}. Every bad value is a usage error, exit code 2, found before
- * the scene is loaded; the files of --frames are checked by {@link FrameOutputs} once the scene is
- * read, before any is made. The options that change the scene are checked as {@link SceneOptions}.
+ * Checks render's own option values that picocli's types cannot (ranges, names, the output file)
+ * and parses them, with the options it shares ({@link RenderOptions}, which checks those), into a
+ * {@link RenderRequest}. Every bad value is a usage error, exit code 2, found before the scene is
+ * loaded; the files of --frames are checked by {@code cli.render.FrameOutputs} once the scene is
+ * read, before any is made.
  */
 final class OptionChecks {
     private final CommandLine commandLine;
@@ -23,10 +26,10 @@ final class OptionChecks {
     }
 
     RenderRequest check(RenderCommand o) {
-        requireWithin("--threads", o.threads, 1, Workers.MAX_THREADS);
+        int threads = o.options.threads();
         requireAtLeast("--repeat", o.repeat, 1);
         boolean costView = usage(() -> parseView(o.view));
-        SceneOptions options = o.sceneFlags.options(commandLine, costView);
+        SceneOptions options = o.options.sceneOptions(o.image, costView);
         FrameRange frames = o.frames == null ? null : usage(() -> FrameRange.parse(o.frames));
         String pattern = null;
         if (frames == null && o.resume) {
@@ -56,27 +59,8 @@ final class OptionChecks {
                 throw new ParameterException(commandLine, "--show needs a graphical display: " + why);
             }
         }
-        return new RenderRequest(o.scene, out, options, o.threads, o.repeat, o.stats, o.quiet, o.show, frames, pattern, o.resume);
-    }
-
-    /**
-     * The mesh cache's cap: --cache-max, else the environment's {@value MeshCache#MAX_ENV}, else
-     * {@link MeshCache#DEFAULT_MAX_BYTES}; a size that does not parse is a usage error naming its source.
-     */
-    long cacheMax(String option, Map<String, String> environment) {
-        String env = environment.get(MeshCache.MAX_ENV);
-        String text = option != null ? option : env != null && !env.isBlank() ? env : null;
-        if (text == null) {
-            return MeshCache.DEFAULT_MAX_BYTES;
-        }
-        String source = option != null ? "--cache-max" : MeshCache.MAX_ENV;
-        return usage(() -> {
-            try {
-                return MeshCache.parseSize(text);
-            } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException(source + ": " + e.getMessage());
-            }
-        });
+        return new RenderRequest(o.scene, out, options, threads, o.repeat, o.stats, o.options.quiet(), o.show, frames, pattern,
+                                 o.resume);
     }
 
     private static boolean parseView(String view) {
@@ -88,17 +72,11 @@ final class OptionChecks {
     }
 
     /** Runs an option's parser, turning its complaint into a usage error. */
-    <T> T usage(Supplier<T> parse) {
+    private <T> T usage(Supplier<T> parse) {
         try {
             return parse.get();
         } catch (IllegalArgumentException e) {
             throw new ParameterException(commandLine, e.getMessage());
-        }
-    }
-
-    private void requireWithin(String option, Integer value, int min, int max) {
-        if (value != null && (value < min || value > max)) {
-            throw new ParameterException(commandLine, option + " must be " + min + " to " + max + ", got " + value);
         }
     }
 

@@ -7,7 +7,7 @@ import java.util.function.DoubleSupplier;
  * A one-line progress bar with percentage and ETA, redrawn on stderr a few times a second by a
  * daemon thread. It stays silent for renders shorter than about a second.
  */
-final class Progress implements AutoCloseable {
+public final class Progress implements AutoCloseable {
     private static final long FIRST_DRAW_NANOS = 1_000_000_000L;
     private static final int WIDTH = 30;
 
@@ -19,12 +19,12 @@ final class Progress implements AutoCloseable {
     private volatile boolean running = true;
     private boolean drawn;
 
-    Progress(PrintStream out, DoubleSupplier fraction) {
+    public Progress(PrintStream out, DoubleSupplier fraction) {
         this(out, "", fraction);
     }
 
     /** A bar preceded by {@code label} (which render of several this is). */
-    Progress(PrintStream out, String label, DoubleSupplier fraction) {
+    public Progress(PrintStream out, String label, DoubleSupplier fraction) {
         this.out = out;
         this.label = label.isEmpty() ? "" : label + " ";
         this.fraction = fraction;
@@ -57,7 +57,7 @@ final class Progress implements AutoCloseable {
         drawn = true;
     }
 
-    static String formatSeconds(double s) {
+    public static String formatSeconds(double s) {
         if (s < 60) {
             return String.format("%.1fs", s);
         }

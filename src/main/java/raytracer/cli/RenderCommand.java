@@ -5,16 +5,19 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import raytracer.render.Workers;
+import raytracer.cli.converge.ConvergeCommand;
+import raytracer.cli.render.RenderRequest;
+import raytracer.cli.render.RenderRun;
 
 /**
- * {@code render [SCENE] -o FILE ...}: the command's options as picocli reads them, and the program's
- * entry point. The options are checked by {@link OptionChecks}, the render is run by
+ * {@code render [SCENE] -o FILE ...}: the program's entry point, render's own options as picocli
+ * reads them, and the options it shares with converge and the Spark job ({@link RenderOptions},
+ * {@link ImageOptions}). The options are checked by {@link OptionChecks}, the render is run by
  * {@link RenderRun}, and failures reach the user through {@link ErrorReport}.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, versionProvider = Version.class,
@@ -29,10 +32,10 @@ public final class RenderCommand implements Callable<Integer> {
     Path output;
 
     @Mixin
-    SceneFlags sceneFlags = new SceneFlags();
+    ImageOptions image = new ImageOptions();
 
-    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Worker threads, 1 to " + Workers.MAX_THREADS + ". Default: all cores (${DEFAULT-VALUE}).")
-    int threads = Runtime.getRuntime().availableProcessors();
+    @Mixin
+    RenderOptions options = new RenderOptions();
 
     @Option(names = "--view", paramLabel = "VIEW",
             description = "What to show: shaded (default) or bvh-cost (false colour: brighter = more bounding-volume tests).")
@@ -61,12 +64,6 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--stats", description = "Print a breakdown: load steps (parse, BVH build, mesh cache), render time, "
             + "rays by kind, BVH tests per ray, peak heap, and what the scene analysis left out and why.")
     boolean stats;
-
-    @Option(names = {"-q", "--quiet"}, description = "No progress bar and no summary line.")
-    boolean quiet;
-
-    @Option(names = {"-v", "--verbose"}, description = "Print stack traces with errors.")
-    boolean verbose;
 
     @Spec
     CommandSpec spec;

@@ -3,7 +3,7 @@ package raytracer.cli;
 import picocli.CommandLine;
 
 /** The version that {@code render --version} prints: the jar manifest's, and the Java it runs on. */
-final class Version implements CommandLine.IVersionProvider {
+public final class Version implements CommandLine.IVersionProvider {
     @Override
     public String[] getVersion() {
         String v = RenderCommand.class.getPackage().getImplementationVersion();

@@ -10,7 +10,6 @@ import org.apache.hadoop.conf.Configuration;
 import raytracer.api.Scene;
 import raytracer.api.SceneFrame;
 import raytracer.api.SceneOptions;
-import raytracer.io.scene.MeshCache;
 import raytracer.render.Workers;
 
 /**
@@ -50,7 +49,7 @@ final class ExecutorScenes {
             SceneOptions options = job.options;
             if (job.executorMeshCache) {
                 // the executor's own default folder: the driver's home need not exist here
-                options = options.withMeshCache(MeshCache.defaultDir(System.getenv(), System.getProperty("user.home")));
+                options = options.withDefaultMeshCache();
             }
             return Scene.of(job.scenePath == null ? null : Path.of(job.scenePath), job.sceneText, options);
         });

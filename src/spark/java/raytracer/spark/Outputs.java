@@ -2,7 +2,9 @@ package raytracer.spark;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.file.Files;
 import java.util.Collection;
+import java.util.List;
 import java.util.UUID;
 import org.apache.hadoop.conf.Configuration;
 import org.apache.hadoop.fs.FSDataOutputStream;
@@ -10,6 +12,10 @@ import org.apache.hadoop.fs.FileStatus;
 import org.apache.hadoop.fs.FileSystem;
 import org.apache.hadoop.fs.LocalFileSystem;
 import org.apache.hadoop.fs.Path;
+import raytracer.api.FrameFiles;
+import raytracer.api.FrameRange;
+import raytracer.api.OutputFile;
+import raytracer.image.ImageWriters;
 
 /**
  * Images on any Hadoop file system ({@code file:}, {@code hdfs:}, {@code s3a:}), written under
@@ -106,6 +112,38 @@ final class Outputs {
         }
     }
 
+    /** {@code <scene name>.png} (of the embedded scene, {@code default.png}), or of an animation {@code <scene name>-%04d.png}. */
+    static String defaultFor(java.nio.file.Path scene, boolean animation) {
+        String name = scene == null ? "default" : scene.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        return animation ? name.replace("%", "%%") + "-%04d.png" : name + ".png";
+    }
+
+    /**
+     * Why the output {@code out} (a pattern with {@code range}) cannot be written, as a usage
+     * error's message, or null: known before any work. A pattern must name the frames, the
+     * extension be one render writes, and a local output follow render's rules: never the scene
+     * ({@code scene}, null for the embedded one), and writable (its folder may be missing: it is
+     * made); the files the scene reads are checked by the tasks.
+     */
+    static String whyNotWritable(String out, FrameRange range, java.nio.file.Path scene) {
+        if (range != null && FrameFiles.whyNotPattern(out) != null) {
+            return "-o " + out + " cannot name the frames: " + FrameFiles.whyNotPattern(out);
+        }
+        if (!ImageWriters.isSupported(range != null ? FrameFiles.format(out, 0) : out)) {
+            return "cannot write " + out + ": unsupported extension (use one of " + String.join(", ", ImageWriters.EXTENSIONS) + ")";
+        }
+        java.nio.file.Path local = localFile(range != null ? FrameFiles.format(out, range.first()) : out);
+        if (local == null) {
+            return null;
+        }
+        java.nio.file.Path folder = local.toAbsolutePath().getParent();
+        String why = OutputFile.whyInput(local, scene, List.of());
+        if (why == null && folder != null && Files.isDirectory(folder)) {
+            why = OutputFile.whyUnwritable(local);
+        }
+        return why == null ? null : "cannot write " + out + ": " + why;
+    }
+
     /** The local file {@code target} names (a plain path or {@code file:}), or null on any other file system. */
     static java.nio.file.Path localFile(String target) {
         java.net.URI uri = new Path(target).toUri();
@@ -115,11 +153,11 @@ final class Outputs {
 
     /**
      * Why {@code target} must not be written because the frame read it (a texture, a mesh named as
-     * the output: the rule of {@code render}, {@link raytracer.cli.OutputFile#whyInput}), or null.
+     * the output: the rule of {@code render}, {@link OutputFile#whyInput}), or null.
      */
     static String whyInput(String target, java.util.Collection<java.nio.file.Path> inputs) {
         java.nio.file.Path local = localFile(target);
-        String why = local == null ? null : raytracer.cli.OutputFile.whyInput(local, null, inputs);
+        String why = local == null ? null : OutputFile.whyInput(local, null, inputs);
         return why == null ? null : "cannot write " + target + ": " + why;
     }
 }

@@ -2,14 +2,11 @@ package raytracer.spark;
 
 import java.io.PrintWriter;
 import java.net.URL;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
-import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.jar.JarFile;
 import org.apache.hadoop.conf.Configuration;
@@ -23,13 +20,13 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import raytracer.api.FrameFiles;
+import raytracer.api.FrameRange;
 import raytracer.api.ImageSettings;
 import raytracer.api.Scene;
 import raytracer.api.SceneOptions;
-import raytracer.cli.FrameFiles;
-import raytracer.cli.FrameRange;
-import raytracer.cli.OutputFile;
-import raytracer.cli.SceneFlags;
+import raytracer.cli.ImageOptions;
+import raytracer.cli.RenderOptions;
 import raytracer.cli.Terminal;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
@@ -38,7 +35,6 @@ import raytracer.io.scene.SceneFile;
 import raytracer.render.Renderer;
 import raytracer.render.TileImage;
 import raytracer.render.TilePixels;
-import raytracer.render.Workers;
 
 /**
  * {@code spark-submit --class raytracer.spark.SparkRender --jars render.jar render-spark.jar SCENE
@@ -47,10 +43,12 @@ import raytracer.render.Workers;
  * still (or an animation of fewer frames than the cluster has cores) is runs of its tile list,
  * spread over the image, rendered into arrays and put together on the driver, which writes the
  * file. Files are written atomically under fixed names on any Hadoop file system, so a retried or
- * speculative task is harmless. The options that change the image are render's
- * ({@link SceneFlags}); this command adds its own. docs/distributed.md tells the whole of it.
+ * speculative task is harmless. The options that change the image are render's, checked as render
+ * checks them ({@link RenderOptions}, {@link ImageOptions}: the only classes of the command line
+ * the job takes, with {@link Terminal}'s escaping), worded for the job by {@link SparkHelp}; this
+ * command adds its own. docs/distributed.md tells the whole of it.
  */
-@Command(name = "render-spark", sortOptions = false,
+@Command(name = "render-spark", sortOptions = false, resourceBundle = "raytracer.spark.SparkHelp",
          description = "Renders a scene file on Apache Spark (run by spark-submit), the same bytes as render. A still is runs of "
                        + "its tiles put together on the driver; an animation (--frames) a task per frame, each written by its task.")
 public final class SparkRender implements Callable<Integer> {
@@ -73,22 +71,16 @@ public final class SparkRender implements Callable<Integer> {
                           + "frames. Default: a task per frame, or three per core for a still.")
     Integer tasks;
 
-    @Option(names = {"-t", "--threads"}, paramLabel = "T", description = "Render threads per task. Default: the task's cores (spark.task.cpus).")
-    Integer threads;
-
     @Option(names = "--scene-on-executors", paramLabel = "PATH",
             description = "The scene file's path on the executors, whose folder holds its meshes and images there (where "
                           + "--archives unpacks them). Default: the scene's absolute path here (a shared file system).")
     String sceneOnExecutors;
 
     @Mixin
-    SceneFlags sceneFlags = new SceneFlags();
+    ImageOptions image = new ImageOptions();
 
-    @Option(names = {"-q", "--quiet"}, description = "No progress and no summary.")
-    boolean quiet;
-
-    @Option(names = {"-v", "--verbose"}, description = "Spark's own log at INFO, and stack traces with errors.")
-    boolean verbose;
+    @Mixin
+    RenderOptions options = new RenderOptions();
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help message and exit.")
     boolean help;
@@ -157,7 +149,7 @@ public final class SparkRender implements Callable<Integer> {
         });
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             commandLine.getErr().println("render-spark: error: " + oneLine(ex));
-            if (command.verbose) {
+            if (command.options.verbose()) {
                 ex.printStackTrace(commandLine.getErr());
             }
             return BAD_INPUT;
@@ -177,7 +169,9 @@ public final class SparkRender implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         CommandLine commandLine = spec.commandLine();
-        SceneOptions options = sceneFlags.options(commandLine, false);
+        SceneOptions sceneOptions = options.sceneOptions(image, false);
+        // without -t each task takes its own cores
+        int threads = options.threadsGiven() ? options.threads() : 0;
         FrameRange range = null;
         if (frames != null) {
             try {
@@ -189,36 +183,17 @@ public final class SparkRender implements Callable<Integer> {
         if (tasks != null && tasks < 1) {
             throw new ParameterException(commandLine, "--tasks must be at least 1");
         }
-        if (threads != null && (threads < 1 || threads > Workers.MAX_THREADS)) {
-            throw new ParameterException(commandLine, "--threads must be 1 to " + Workers.MAX_THREADS + ", got " + threads);
-        }
-        String out = output != null ? output : defaultOutput(range != null);
-        if (range != null && FrameFiles.whyNotPattern(out) != null) {
-            throw new ParameterException(commandLine, "-o " + out + " cannot name the frames: " + FrameFiles.whyNotPattern(out));
-        }
-        if (!ImageWriters.isSupported(range != null ? FrameFiles.format(out, 0) : out)) {
-            throw new ParameterException(commandLine, "cannot write " + out + ": unsupported extension (use one of "
-                                                      + String.join(", ", ImageWriters.EXTENSIONS) + ")");
-        }
-        // render's rules for a local output, known before any work: never the scene, and writable
-        // (its folder may be missing: it is made); the files the scene reads are checked by the tasks
-        Path local = Outputs.localFile(range != null ? FrameFiles.format(out, range.first()) : out);
-        if (local != null) {
-            Path folder = local.toAbsolutePath().getParent();
-            String why = OutputFile.whyInput(local, scene, List.of());
-            if (why == null && folder != null && Files.isDirectory(folder)) {
-                why = OutputFile.whyUnwritable(local);
-            }
-            if (why != null) {
-                throw new ParameterException(commandLine, "cannot write " + out + ": " + why);
-            }
+        String out = output != null ? output : Outputs.defaultFor(scene, range != null);
+        String unwritable = Outputs.whyNotWritable(out, range, scene);
+        if (unwritable != null) {
+            throw new ParameterException(commandLine, unwritable);
         }
         // the driver reads the text and the image settings only: no mesh is read here
         String text = scene == null ? Scene.defaultSceneText() : SceneFile.readText(scene);
-        Scene read = Scene.of(scene, text, options.withMeshCache(null));
-        ImageSettings image = read.image();
+        Scene read = Scene.of(scene, text, sceneOptions.withMeshCache(null));
+        ImageSettings settings = read.image();
         if (range != null) {
-            String why = range.whyNotIn(image.frames(), read.file().animated());
+            String why = range.whyNotIn(settings.frames(), read.file().animated());
             if (why != null) {
                 throw new ParameterException(commandLine, "--frames " + range.first() + "-" + range.last() + ": " + why);
             }
@@ -227,17 +202,13 @@ public final class SparkRender implements Callable<Integer> {
         JavaSparkContext sc = given != null ? given : context();
         long contextNanos = System.nanoTime() - start;
         try {
-            return render(sc, text, options, image, range != null ? range : new FrameRange(0, 0), range != null, out, contextNanos);
+            return render(sc, text, sceneOptions, threads, settings, range != null ? range : new FrameRange(0, 0), range != null, out,
+                          contextNanos);
         } finally {
             if (given == null) {
                 sc.stop();
             }
         }
-    }
-
-    private String defaultOutput(boolean animation) {
-        String name = scene == null ? "default" : scene.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        return animation ? name.replace("%", "%%") + "-%04d.png" : name + ".png";
     }
 
     /** A context from spark-submit's configuration, our classes first on the executors, Spark's log at WARN. */
@@ -246,18 +217,18 @@ public final class SparkRender implements Callable<Integer> {
         conf.setIfMissing("spark.app.name", "render-spark " + (scene == null ? "default scene" : scene.getFileName()));
         conf.setIfMissing("spark.executor.userClassPathFirst", "true");
         JavaSparkContext sc = new JavaSparkContext(conf);
-        if (!verbose) {
+        if (!options.verbose()) {
             sc.setLogLevel("WARN");
         }
         return sc;
     }
 
     /** Plans the tasks, runs them, writes what the driver puts together, cleans up, and reports. */
-    private int render(JavaSparkContext sc, String text, SceneOptions options, ImageSettings image, FrameRange range, boolean animation,
-                       String out, long contextNanos) throws Exception {
+    private int render(JavaSparkContext sc, String text, SceneOptions sceneOptions, int threads, ImageSettings settings, FrameRange range,
+                       boolean animation, String out, long contextNanos) throws Exception {
         long start = System.nanoTime();
         Configuration hadoop = sc.hadoopConfiguration();
-        int tileCount = Renderer.tiles(image.width(), image.height()).size();
+        int tileCount = Renderer.tiles(settings.width(), settings.height()).size();
         int cores = sc.defaultParallelism();
         int wanted = tasks != null ? tasks : animation && range.count() >= cores ? range.count() : 3 * cores;
         int runs = Math.min(tileCount, Math.max(1, (wanted + range.count() - 1) / range.count()));
@@ -267,16 +238,15 @@ public final class SparkRender implements Callable<Integer> {
             Outputs.makeFolder(outputs[f - range.first()], hadoop);
         }
         String scenePath = sceneOnExecutors != null ? sceneOnExecutors : scene == null ? null : scene.toAbsolutePath().toString();
-        boolean executorCache = sceneFlags.defaultMeshCache();
-        Job job = new Job(text, scenePath, options, executorCache, threads == null ? 0 : threads, sc.sc().applicationId(),
-                          range.first(), outputs);
+        Job job = new Job(text, scenePath, sceneOptions, options.defaultMeshCache(), threads, sc.sc().applicationId(), range.first(),
+                          outputs);
         List<int[]> plan = new ArrayList<>();
         for (int f = range.first(); f <= range.last(); f++) {
             for (int r = 0; r < runs; r++) {
                 plan.add(runs == 1 ? new int[] {f, -1, -1} : new int[] {f, (int) ((long) r * tileCount / runs), (int) ((long) (r + 1) * tileCount / runs)});
             }
         }
-        Progress progress = new Progress(err, plan.size(), runs == 1 ? "frames" : "tile runs", quiet);
+        Progress progress = new Progress(err, plan.size(), runs == 1 ? "frames" : "tile runs", options.quiet());
         sc.sc().addSparkListener(progress);
         List<byte[]> results;
         try {
@@ -286,24 +256,14 @@ public final class SparkRender implements Callable<Integer> {
             // what killed or failed attempts left behind
             Outputs.removePartials(List.of(outputs), job.runId, hadoop);
         }
+        long jobNanos = System.nanoTime() - start;
         Map<Integer, List<TilePixels>> tiles = new TreeMap<>();
         Map<Integer, String> written = new TreeMap<>();
         Map<Integer, Long> sizes = new TreeMap<>();
-        long jobNanos = System.nanoTime() - start;
-        Set<String> yaml = new TreeSet<>();
-        long nonFinite = 0;
-        long taskNanos = 0;
-        long renderNanos = 0;
-        long sceneNanos = 0;
-        int sceneReads = 0;
+        JobReport report = new JobReport();
         for (byte[] bytes : results) {
             TaskResult r = TaskResult.decode(bytes);
-            yaml.add(r.yaml);
-            nonFinite += r.nonFiniteSamples;
-            taskNanos += r.taskNanos;
-            renderNanos += r.renderNanos;
-            sceneNanos += r.sceneNanos;
-            sceneReads += r.sceneNanos > 0 ? 1 : 0;
+            report.add(r);
             switch (r.kind) {
                 case TaskResult.FAILED -> throw new SceneException(r.text);
                 case TaskResult.WRITTEN -> {
@@ -315,55 +275,20 @@ public final class SparkRender implements Callable<Integer> {
         }
         long assembly = System.nanoTime();
         for (Map.Entry<Integer, List<TilePixels>> frame : tiles.entrySet()) {
-            Film film = new Film(image.width(), image.height());
-            TileImage.assemble(frame.getValue(), image.filter(), film);
+            Film film = new Film(settings.width(), settings.height());
+            TileImage.assemble(frame.getValue(), settings.filter(), film);
             String target = job.output(frame.getKey());
             String name = new org.apache.hadoop.fs.Path(target).getName();
             sizes.put(frame.getKey(), Outputs.write(target, job.runId, hadoop,
-                                                    o -> ImageWriters.encode(film, image.exposure(), image.srgb(), name, o)));
+                                                    o -> ImageWriters.encode(film, settings.exposure(), settings.srgb(), name, o)));
             written.put(frame.getKey(), target);
         }
         long assemblyNanos = System.nanoTime() - assembly;
         Outputs.removePartials(List.of(outputs), job.runId, hadoop);
-        if (nonFinite > 0) {
-            err.println("render-spark: warning: " + nonFinite + " non-finite sample" + (nonFinite == 1 ? "" : "s")
-                        + " (NaN or infinite radiance) dropped; the pixels they fell in average the others");
-        }
-        if (!quiet) {
-            written.forEach((f, file) -> err.printf("render-spark: wrote %s (%,d bytes)%n", file, sizes.get(f)));
-            yaml.add("driver " + FrameTask.yamlSource());
-            err.println(summary(range, animation, image, plan.size(), runs, progress.failedAttempts(2000), cores, System.nanoTime() - start,
-                                contextNanos, yaml));
-            // what the model of docs/distributed.md is made of: scene reads, the tasks' own time, the driver's part
-            err.printf(java.util.Locale.ROOT, "render-spark: timings: job %.3f s, first task started after %.3f s, tasks %.3f s in all "
-                       + "(%.1f ms a task, %.1f ms of it rendering), %d scene read%s on executors (%.3f s each), %s put together and written by the driver "
-                       + "in %.3f s%n",
-                       jobNanos / 1e9, progress.firstStartNanos() / 1e9, taskNanos / 1e9, taskNanos / 1e6 / plan.size(),
-                       renderNanos / 1e6 / plan.size(), sceneReads,
-                       sceneReads == 1 ? "" : "s",
-                       sceneReads == 0 ? 0 : sceneNanos / 1e9 / sceneReads, tiles.size() == 1 ? "1 frame" : tiles.size() + " frames",
-                       assemblyNanos / 1e9);
-        }
+        report.print(err, options.quiet(), written, sizes, new JobReport.Run(
+            animation ? "frames " + range.first() + "-" + range.last() : "a still", scene == null ? "the default scene" : scene.toString(),
+            settings.width(), settings.height(), settings.viewPlane().numSamples(), plan.size(), runs, progress.failedAttempts(2000), cores,
+            System.nanoTime() - start, contextNanos, jobNanos, progress.firstStartNanos(), tiles.size(), assemblyNanos));
         return 0;
-    }
-
-    private String summary(FrameRange range, boolean animation, ImageSettings image, int taskCount, int runs, int failed, int cores,
-                           long nanos, long contextNanos, Set<String> yaml) {
-        String what = animation ? "frames " + range.first() + "-" + range.last() : "a still";
-        String split = runs == 1 ? "a task per frame" : runs + " tile runs per frame";
-        TreeSet<String> executors = new TreeSet<>();
-        String driver = "";
-        for (String y : yaml) {
-            if (y.startsWith("driver ")) {
-                driver = y.substring("driver ".length());
-            } else {
-                executors.add(y);
-            }
-        }
-        return String.format(java.util.Locale.ROOT, "render-spark: %s of %s, %dx%d, %d spp: %d tasks (%s, %d failed attempt%s retried) "
-                             + "on %d cores in %s (the Spark context started in %.3f s); SnakeYAML from %s on the driver, from %s on the executors",
-                             what, scene == null ? "the default scene" : scene, image.width(), image.height(), image.viewPlane().numSamples(),
-                             taskCount, split, failed, failed == 1 ? "" : "s", cores, Progress.time(nanos / 1e9),
-                             contextNanos / 1e9, driver, String.join(" and ", executors));
     }
 }

@@ -92,7 +92,7 @@ class MeshCacheOptionsTest {
         }
     }
 
-    /** Issue 25, item 12: the same file in three folders is one entry, read by the second and third. */
+    /** The same file in three folders is one entry, read by the second and third. */
     @Test
     void copiesOfOneFileShareOneEntry() throws IOException {
         String cache = dir.resolve("meshes").toString();
@@ -105,7 +105,7 @@ class MeshCacheOptionsTest {
         assertEquals(1, entries(Path.of(cache)));
     }
 
-    /** Issue 25, item 12: a tiny mesh is not cached; a name of 240 characters is, under a short name, without a warning. */
+    /** A tiny mesh is not cached; a name of 240 characters is, under a short name, without a warning. */
     @Test
     void tinyMeshesAreNotCachedAndLongNamesAre() throws IOException {
         Path cache = dir.resolve("meshes");
@@ -124,11 +124,12 @@ class MeshCacheOptionsTest {
         assertTrue(render(dir.resolve("long"), cache.toString()).err().contains("read from the mesh cache"));
     }
 
-    /** Issue 25, item 12: a killed writer's temporary file, an hour old, is removed; the cap evicts; both are options. */
+    /** A killed writer's temporary file, an hour old, is removed; the cap evicts; both are options. */
     @Test
     void stalePartialsGoAndTheCapHolds() throws IOException {
         Path cache = Files.createDirectories(dir.resolve("meshes"));
-        Path stale = Files.writeString(cache.resolve(".g.obj-0123456789abcdef.mesh.k1.partial"), "killed");
+        // what a killed writer leaves: the entry's temporary name, the format's magic bytes and part of the rest
+        Path stale = Files.writeString(cache.resolve(".g.obj-0123456789abcdef.mesh.k1.partial"), "RTMESH\0\0killed");
         Files.setLastModifiedTime(stale, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis() - 7_200_000));
         grid(dir.resolve("a"), "g.obj");
         assertEquals(0, render(dir.resolve("a"), cache.toString()).code());
@@ -141,11 +142,10 @@ class MeshCacheOptionsTest {
         RenderCommandTest.Result bad = render(dir.resolve("b"), cache.toString(), "--cache-max", "lots");
         assertEquals(ErrorReport.BAD_USAGE, bad.code());
         assertTrue(bad.err().contains("--cache-max: a size such as 512M or 2G is expected, got 'lots'"), bad.err());
-        OptionChecks checks = new OptionChecks(new picocli.CommandLine(new RenderCommand()));
-        assertEquals(3L << 30, checks.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")));
-        assertEquals(1L << 20, checks.cacheMax("1M", java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")), "the option wins");
-        picocli.CommandLine.ParameterException e = org.junit.jupiter.api.Assertions.assertThrows(
-            picocli.CommandLine.ParameterException.class, () -> checks.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "x")));
+        assertEquals(3L << 30, RenderOptions.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")));
+        assertEquals(1L << 20, RenderOptions.cacheMax("1M", java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "3G")), "the option wins");
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(
+            IllegalArgumentException.class, () -> RenderOptions.cacheMax(null, java.util.Map.of("RAYTRACER_MESH_CACHE_MAX", "x")));
         assertTrue(e.getMessage().startsWith("RAYTRACER_MESH_CACHE_MAX: "), e.getMessage());
     }
 }

@@ -19,18 +19,18 @@ import org.junit.jupiter.api.io.TempDir;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 
-class RenderCommandTest {
+public class RenderCommandTest {
     @TempDir
     Path dir;
 
     /** Exit code and everything written to stderr. */
-    record Result(int code, String err) {
-        String[] lines() {
+    public record Result(int code, String err) {
+        public String[] lines() {
             return err.strip().isEmpty() ? new String[0] : err.strip().split("\\R");
         }
     }
 
-    static Result run(String... args) {
+    public static Result run(String... args) {
         StringWriter err = new StringWriter();
         int code = RenderCommand.run(new PrintWriter(err, true), args);
         return new Result(code, err.toString());

@@ -8,10 +8,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import raytracer.accel.MeshBVH;
+import raytracer.cache.MeshCache;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
 import raytracer.core.Texture;
-import raytracer.image.FileKind;
 import raytracer.io.obj.ObjException;
 import raytracer.io.obj.ObjLoader;
 import raytracer.io.obj.ObjMaterial;
@@ -85,7 +85,7 @@ final class MeshReader {
         String key = file.toAbsolutePath().normalize() + "\n" + options;
         SharedMesh mesh = shared.get(key);
         if (mesh == null) {
-            mesh = load(o, file, smooth, builder, options, report);
+            mesh = SharedMesh.load(o, file, smooth, builder, options, cache, report);
             shared.put(key, mesh);
         } else {
             mesh.inputs().forEach(report::addInput);
@@ -101,40 +101,6 @@ final class MeshReader {
             objects.put(objectKey, object);
         }
         return object;
-    }
-
-    /** Parses the file, or reads its cache entry, with the load report's figures and warnings. */
-    private SharedMesh load(YamlObject o, Path file, boolean smooth, String builder, String options, LoadReport report)
-            throws SceneException {
-        String name = file.getFileName().toString();
-        report.addInput(file);
-        String notRegular = FileKind.notRegular(file);
-        if (notRegular != null) {
-            // before the cache's checksum of the file, which would block on a FIFO as a parse would
-            throw o.source().error(o.raw("file"), "cannot read mesh " + file + ": " + notRegular);
-        }
-        long lookupStart = System.nanoTime();
-        MeshCache.Lookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
-        long readNanos = System.nanoTime() - lookupStart;
-        MeshCacheFile.Header cached = lookup == null ? null : lookup.header();
-        if (cached != null) {
-            report.addStatistic(statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
-            List<Path> inputs = new ArrayList<>(List.of(file));
-            cached.libraries().forEach(library -> inputs.add(file.toAbsolutePath().getParent().resolve(library.path())));
-            inputs.forEach(report::addInput);
-            return new SharedMesh(file, builder, lookup, readNanos, inputs);
-        }
-        long start = System.nanoTime();
-        ObjModel model = parse(o, file, smooth);
-        long parseNanos = System.nanoTime() - start;
-        report.recordTiming("parse " + name, parseNanos);
-        model.warnings().forEach(report::addWarning);
-        report.addStatistic(statistic(name, model.parsed().triangleCount(), model.parsed().vertexCount(), model.ngons(),
-                                      model.faces()));
-        model.libraries().forEach(report::addInput);
-        List<Path> inputs = new ArrayList<>(List.of(file));
-        inputs.addAll(model.libraries());
-        return new SharedMesh(file, builder, lookup, model, parseNanos, inputs);
     }
 
     /** One scene object around the shared mesh: its materials (the MTL's unless it names one) and normal maps. */

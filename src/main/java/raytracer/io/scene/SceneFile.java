@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.OptionalInt;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.cache.MeshCache;
 import raytracer.core.Camera;
 import raytracer.core.Light;
 import raytracer.core.Material;
@@ -68,7 +69,15 @@ public final class SceneFile {
 
     /** Reads the scene file {@code file}; its meshes come from {@code cache} when it has them (null: no cache). */
     public static SceneFile read(Path file, MeshCache cache) throws SceneException {
-        return new SceneFile(SceneLoader.source(file), SceneLoader.text(file), file, OptionalInt.empty(), cache);
+        return read(file, cache, OptionalInt.empty());
+    }
+
+    /**
+     * As {@link #read(Path, MeshCache)}; with {@code areaLightSamples} every area light takes that
+     * many samples per shaded point instead of its {@code samples} key (the convergence benchmark's override).
+     */
+    public static SceneFile read(Path file, MeshCache cache, OptionalInt areaLightSamples) throws SceneException {
+        return new SceneFile(SceneLoader.source(file), SceneLoader.text(file), file, areaLightSamples, cache);
     }
 
     /**
@@ -83,13 +92,18 @@ public final class SceneFile {
      * The scene file {@code file} whose text is {@code text}, already read (by another machine: a
      * render farm's driver sends it); relative paths start at {@code file}'s folder.
      */
-    public static SceneFile of(Path file, String text, MeshCache cache) throws SceneException {
-        return new SceneFile(SceneLoader.source(file), text, file, OptionalInt.empty(), cache);
+    public static SceneFile of(Path file, String text, MeshCache cache, OptionalInt areaLightSamples) throws SceneException {
+        return new SceneFile(SceneLoader.source(file), text, file, areaLightSamples, cache);
     }
 
     /** Scene text named {@code sourceName} in messages; relative paths start at the working directory. */
     public static SceneFile of(String sourceName, String text) throws SceneException {
-        return new SceneFile(new Source(sourceName, null), text, null, OptionalInt.empty(), null);
+        return of(sourceName, text, OptionalInt.empty());
+    }
+
+    /** As {@link #of(String, String)}, every area light taking {@code areaLightSamples} when present. */
+    public static SceneFile of(String sourceName, String text, OptionalInt areaLightSamples) throws SceneException {
+        return new SceneFile(new Source(sourceName, null), text, null, areaLightSamples, null);
     }
 
     static SceneFile of(Source source, String text, OptionalInt areaLightSamples, MeshCache cache) throws SceneException {

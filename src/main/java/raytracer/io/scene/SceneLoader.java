@@ -24,6 +24,7 @@ import org.yaml.snakeyaml.error.YAMLException;
 import org.yaml.snakeyaml.nodes.Node;
 import org.yaml.snakeyaml.parser.ParserImpl;
 import org.yaml.snakeyaml.resolver.Resolver;
+import raytracer.cache.MeshCache;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelFilter;

@@ -1,13 +1,19 @@
 package raytracer.io.scene;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import raytracer.accel.FlatBVH;
 import raytracer.accel.MedianSplitBuilder;
 import raytracer.accel.MeshBVH;
 import raytracer.accel.SahBuilder;
+import raytracer.cache.MeshCache;
+import raytracer.cache.MeshCacheEntry;
+import raytracer.cache.MeshCacheHeader;
+import raytracer.cache.MeshCacheLookup;
 import raytracer.core.Material;
+import raytracer.image.FileKind;
 import raytracer.io.obj.ObjMaterial;
 import raytracer.io.obj.ObjModel;
 import raytracer.math.BBox;
@@ -16,11 +22,11 @@ import raytracer.shapes.mesh.ParsedMesh;
 
 /**
  * One OBJ file with one set of options (smoothing, builder), as every mesh object of a scene that
- * names them shares it: parsed or read from the mesh cache once, its BVH built once, its arrays
- * held once (issue 25, item 4: 400 objects naming one 40k-triangle file each held their own copy,
- * 1000 ran out of a 1 GiB heap). Each object puts its own materials and normal maps around the
- * shared arrays ({@link MeshBVH#inLeafOrder}); objects that differ only by their transform share
- * the object too ({@link MeshReader}), as instances of it. The frames of an animation share it as
+ * names them shares it: parsed or read from the mesh cache once ({@link #load}), its BVH built
+ * once, its arrays held once (when each object held its own copy, 400 objects naming one
+ * 40k-triangle file took 400 copies, and 1000 ran out of a 1 GiB heap). Each object puts its own
+ * materials and normal maps around the shared arrays ({@link MeshBVH#inLeafOrder}); objects that
+ * differ only by their transform share the object too ({@link MeshReader}), as instances of it. The frames of an animation share it as
  * well ({@link SceneFile}): what it reads and builds is reported to the frame that first needs it.
  */
 final class SharedMesh {
@@ -29,7 +35,7 @@ final class SharedMesh {
     /** The mesh file and the files it names (material libraries), which every scene using it reads. */
     private final List<Path> inputs;
     /** The mesh's place in the cache, or null without one. */
-    private final MeshCache.Lookup lookup;
+    private final MeshCacheLookup lookup;
     private final BBox bounds;
     private final List<ObjMaterial> materials;
     private final Set<Integer> sheets;
@@ -37,14 +43,14 @@ final class SharedMesh {
     private ObjModel model;
     private final long parseNanos;
     /** The cache entry as read at load, until it is taken; null when the mesh was parsed. */
-    private MeshCacheFile.Contents contents;
+    private MeshCacheEntry contents;
     private final long readNanos;
     /** The mesh in its tree's leaf order and the tree, once made. */
     private Mesh mesh;
     private FlatBVH bvh;
 
     /** A mesh parsed now, to be built when the scene is prepared. */
-    SharedMesh(Path file, String builder, MeshCache.Lookup lookup, ObjModel model, long parseNanos, List<Path> inputs) {
+    private SharedMesh(Path file, String builder, MeshCacheLookup lookup, ObjModel model, long parseNanos, List<Path> inputs) {
         this.name = file.getFileName().toString();
         this.builder = builder;
         this.inputs = List.copyOf(inputs);
@@ -58,7 +64,7 @@ final class SharedMesh {
     }
 
     /** A mesh read whole from the cache now (checked), to be taken when the scene is prepared. */
-    SharedMesh(Path file, String builder, MeshCache.Lookup lookup, long readNanos, List<Path> inputs) {
+    private SharedMesh(Path file, String builder, MeshCacheLookup lookup, long readNanos, List<Path> inputs) {
         this.name = file.getFileName().toString();
         this.builder = builder;
         this.inputs = List.copyOf(inputs);
@@ -66,11 +72,49 @@ final class SharedMesh {
         this.contents = lookup.take();
         this.readNanos = readNanos;
         this.parseNanos = 0;
-        MeshCacheFile.Header header = contents.header();
+        MeshCacheHeader header = contents.header();
         this.bounds = header.bounds();
         this.materials = header.materials();
         this.sheets = header.sheets();
     }
+
+    /**
+     * The mesh object {@code o}'s file: its entry read from {@code cache} (null: no cache), or the
+     * file parsed, with the load report's figures and warnings.
+     */
+    static SharedMesh load(YamlObject o, Path file, boolean smooth, String builder, String options, MeshCache cache, LoadReport report)
+            throws SceneException {
+        String name = file.getFileName().toString();
+        report.addInput(file);
+        String notRegular = FileKind.notRegular(file);
+        if (notRegular != null) {
+            // before the cache's checksum of the file, which would block on a FIFO as a parse would
+            throw o.source().error(o.raw("file"), "cannot read mesh " + file + ": " + notRegular);
+        }
+        long lookupStart = System.nanoTime();
+        MeshCacheLookup lookup = cache == null ? null : cache.lookup(file, options, report::addWarning);
+        long readNanos = System.nanoTime() - lookupStart;
+        MeshCacheHeader cached = lookup == null ? null : lookup.header();
+        if (cached != null) {
+            report.addStatistic(MeshReader.statistic(name, cached.triangles(), cached.vertices(), cached.ngons(), cached.faces()));
+            List<Path> inputs = new ArrayList<>(List.of(file));
+            cached.libraries().forEach(library -> inputs.add(file.toAbsolutePath().getParent().resolve(library.path())));
+            inputs.forEach(report::addInput);
+            return new SharedMesh(file, builder, lookup, readNanos, inputs);
+        }
+        long start = System.nanoTime();
+        ObjModel model = MeshReader.parse(o, file, smooth);
+        long parseNanos = System.nanoTime() - start;
+        report.recordTiming("parse " + name, parseNanos);
+        model.warnings().forEach(report::addWarning);
+        report.addStatistic(MeshReader.statistic(name, model.parsed().triangleCount(), model.parsed().vertexCount(), model.ngons(),
+                                      model.faces()));
+        model.libraries().forEach(report::addInput);
+        List<Path> inputs = new ArrayList<>(List.of(file));
+        inputs.addAll(model.libraries());
+        return new SharedMesh(file, builder, lookup, model, parseNanos, inputs);
+    }
+
 
     String name() {
         return name;
@@ -150,7 +194,7 @@ final class SharedMesh {
         String cached = "";
         if (lookup != null) {
             long write = System.nanoTime();
-            MeshCache.Stored stored = lookup.store(model, mesh, bvh, report::addWarning);
+            MeshCacheLookup.Stored stored = lookup.store(model, mesh, bvh, report::addWarning);
             if (stored.written()) {
                 long wrote = System.nanoTime() - write;
                 report.recordPrepareTiming("write " + name + " to the mesh cache", wrote);

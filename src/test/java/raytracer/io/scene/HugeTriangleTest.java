@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cache.MeshCache;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.image.ImageWriters;
@@ -16,7 +17,7 @@ import raytracer.render.Renders;
 import raytracer.shapes.Triangle;
 
 /**
- * Triangles are bounded at load as spheres are (issue 25, item 8): before, triangles of extent
+ * Triangles are bounded at load as spheres are: before, triangles of extent
  * about 1e77 to 1e153 rendered unlit with no shadow ray (their normal, the cross product of two
  * edges, squared past the largest double and normalised to 0), and from 1e154 were never hit, all
  * without a word. A coordinate past {@link Triangle#MAX_COORDINATE} is refused with its file and

@@ -12,6 +12,7 @@ import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cache.MeshCache;
 import raytracer.cameras.Pinhole;
 import raytracer.core.Material;
 import raytracer.core.ShadeRec;

@@ -11,9 +11,10 @@ import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import raytracer.cache.MeshCache;
 
 /**
- * Every file a scene reads besides the scene itself must be a regular file (issue 25, item 2): a
+ * Every file a scene reads besides the scene itself must be a regular file: a
  * FIFO would block the reader for ever without a word, a directory or device is no mesh or image.
  * The message says "not a regular file", not "not found". The FIFOs are made by this test.
  */

@@ -13,6 +13,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import raytracer.accel.MeshBVH;
+import raytracer.cache.MeshCache;
 import raytracer.core.GeometricObject;
 import raytracer.core.World;
 import raytracer.image.Film;
@@ -21,8 +22,7 @@ import raytracer.render.Renders;
 import raytracer.shapes.Instance;
 
 /**
- * Objects naming one OBJ file with the same options share one parse and one tree (issue 25, item
- * 4): before, every object held its own copy, so 400 references to a 40k-triangle file peaked at
+ * Objects naming one OBJ file with the same options share one parse and one tree: before, every object held its own copy, so 400 references to a 40k-triangle file peaked at
  * 693 MiB and 1000 ran out of a 1 GiB heap. Objects that differ only by their transform are one
  * object, instanced; the image is the same as with a copy of the file per object.
  */
