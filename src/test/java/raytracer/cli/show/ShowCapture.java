@@ -55,7 +55,7 @@ final class ShowCapture {
             return new Rectangle(at.x, at.y, picture.getPreferredSize().width, picture.getPreferredSize().height);
         });
         if (mode.equals("capture")) {
-            ImageIO.write(steadyCapture(robot, shown), "png", Path.of(args[1]).toFile());
+            ImageIO.write(steadyCapture(robot, shown, picture), "png", Path.of(args[1]).toFile());
         }
         if (mode.equals("close")) {
             SwingUtilities.invokeLater(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
@@ -112,11 +112,12 @@ final class ShowCapture {
      * The screen's pixels in {@code r} once two reads 100 ms apart agree (the last repaint has reached
      * the server) and show more than one colour: on a loaded machine a window can be mapped, and
      * titled done, before its picture is first painted, and two reads of the bare background agree.
-     * None of the tests' images is one flat colour. A busy machine can take seconds to paint (one
-     * all-black capture was seen after 5 s), so the wait is as long as the window's own: the
-     * first read that passes is taken, and after {@link #TIMEOUT_NANOS} the last read as it is.
+     * None of the tests' images is one flat colour. A busy machine can take seconds to paint, or
+     * lose the paint (all-black captures were seen after 5 s and after 60 s), so while the read is
+     * flat the picture is asked to repaint, for as long as the window's own wait: the first read
+     * that passes is taken, and after {@link #TIMEOUT_NANOS} the last read as it is.
      */
-    private static BufferedImage steadyCapture(Robot robot, Rectangle r) throws InterruptedException {
+    private static BufferedImage steadyCapture(Robot robot, Rectangle r, Component picture) throws InterruptedException {
         robot.waitForIdle();
         BufferedImage before = robot.createScreenCapture(r);
         for (long end = System.nanoTime() + TIMEOUT_NANOS; System.nanoTime() < end; ) {
@@ -126,6 +127,11 @@ final class ShowCapture {
             int[] shown = pixels(now);
             if (Arrays.equals(pixels(before), shown) && !flat(shown)) {
                 return now;
+            }
+            if (flat(shown)) {
+                // an expose event lost under load leaves the mapped window unpainted: ask for the paint again
+                SwingUtilities.invokeLater(picture::repaint);
+                java.awt.Toolkit.getDefaultToolkit().sync();
             }
             before = now;
         }
