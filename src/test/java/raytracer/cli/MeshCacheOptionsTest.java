@@ -128,7 +128,7 @@ class MeshCacheOptionsTest {
     @Test
     void stalePartialsGoAndTheCapHolds() throws IOException {
         Path cache = Files.createDirectories(dir.resolve("meshes"));
-        Path stale = Files.writeString(cache.resolve(".g.obj-0123456789abcdef.mesh.k1.partial"), "killed");
+        Path stale = Files.writeString(cache.resolve(".g.obj-0123456789abcdef.mesh.k1.partial"), "");
         Files.setLastModifiedTime(stale, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis() - 7_200_000));
         grid(dir.resolve("a"), "g.obj");
         assertEquals(0, render(dir.resolve("a"), cache.toString()).code());
