@@ -60,7 +60,7 @@ class RegisteredTypesTest {
         } else {
             assertEquals("s.yaml:1:17: unknown ambient type 'sky'" + allowed(Registry.standard().ambients()),
                          error("ambient: {type: sky}\n"));
-            SceneLoader.load("s.yaml", "ambient: {type: constant, radiance: 0.2}\n");
+            SceneLoader.load("s.yaml", "ambient: {type: constant, radiance: 0.2}\nobjects: []\n");
         }
         assertEquals("s.yaml:1:21: 'radiance' in ambient must be at least 0, got -1", error("ambient: {radiance: -1}\n"));
     }
