@@ -242,28 +242,30 @@ class ArchitectureTest {
     }
 
     /**
-     * The coursework's reference solutions (src/solutions/java, never in render.jar) sit in the
-     * packages where a student's answers go, so they keep the same layering. The exercises' tests
-     * (src/exercises/java) are test code and are not held to it.
+     * The coursework's reference solutions and their registrations (src/solutions/java and
+     * src/solutions/registration, never in render.jar) sit in the packages where a student's
+     * answers go, so they keep the same layering. The exercises' tests (src/exercises/java) are
+     * test code and are not held to it.
      */
     @Test
     void theReferenceSolutionsKeepTheLayeringToo() throws IOException {
-        Path solutions = Path.of("src/solutions/java/raytracer");
         List<String> violations = new ArrayList<>();
         int files = 0;
-        try (Stream<Path> paths = Files.walk(solutions)) {
-            for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
-                files++;
-                String pkg = solutions.relativize(file.getParent()).toString().replace('/', '.');
-                if (!ALLOWED.containsKey(pkg)) {
-                    violations.add(solutions.relativize(file) + " is in a package without a rule here");
-                }
-                for (String used : sourceReferences(Files.readString(file))) {
-                    check(pkg, used, "solutions/" + solutions.relativize(file), violations);
+        for (Path solutions : List.of(Path.of("src/solutions/java/raytracer"), Path.of("src/solutions/registration/raytracer"))) {
+            try (Stream<Path> paths = Files.walk(solutions)) {
+                for (Path file : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".java"))::iterator) {
+                    files++;
+                    String pkg = solutions.relativize(file.getParent()).toString().replace('/', '.');
+                    if (!ALLOWED.containsKey(pkg)) {
+                        violations.add(solutions.relativize(file) + " is in a package without a rule here");
+                    }
+                    for (String used : sourceReferences(Files.readString(file))) {
+                        check(pkg, used, solutions.getParent().getFileName() + "/" + solutions.relativize(file), violations);
+                    }
                 }
             }
         }
-        assertTrue(files >= 2, "the reference solutions were not found in " + solutions.toAbsolutePath());
+        assertTrue(files >= 18, "the reference solutions and registrations were not found in src/solutions");
         assertTrue(violations.isEmpty(), "layering broken:\n" + String.join("\n", new TreeSet<>(violations)));
     }
 

@@ -29,13 +29,14 @@ import raytracer.cli.RenderCommand;
 
 /**
  * The exercises of docs/teaching.md can be done as written. For each exercise of
- * src/solutions/exercises.tsv its test, its reference solution, its registration (a patch of
- * src/main/java) and its example scene exist; the example scene fails to load before the
- * registration, naming what is missing; the nine registrations apply, in order, to a copy of
- * today's src/main/java with the solutions beside them, and the copy compiles under the build's
- * warnings-as-errors; rendered by that copy's command line, every example scene comes out the same
- * to the bit with and without the scene analysis. tools/exercise-walk goes further: it runs each
- * exercise's test and, with all nine registered, the whole suite.
+ * src/solutions/exercises.tsv its test, its reference solution, its registration (a class the
+ * student adds, kept in src/solutions/registration) and its example scene exist; the example scene
+ * fails to load before the registration, naming what is missing; in a copy of today's
+ * src/main/java with the nine solutions and registration classes added, and the registrations'
+ * names added to a copy of the services file (the one file of src/main a student edits), the code
+ * compiles under the build's warnings-as-errors; rendered by that copy's command line, every example
+ * scene comes out the same to the bit with and without the scene analysis. tools/exercise-walk goes
+ * further: it runs each exercise's test and, with all nine registered, the whole suite.
  *
  * <p>In a student's tree, where some exercises are done (their classes are in src/main), the
  * examples of those exercises load, and the reference registrations are not applied over the
@@ -43,11 +44,18 @@ import raytracer.cli.RenderCommand;
  */
 class ExerciseRegistrationTest {
     private static final Path EXERCISES = Path.of("src/solutions/exercises.tsv");
+    /** The list of registrations, which java.util.ServiceLoader reads from the class path. */
+    private static final String SERVICES = "META-INF/services/raytracer.core.Registration";
 
     /** One line of the manifest. */
-    record Exercise(int number, String test, List<String> files, String patch, String scene, List<String> options) {
+    record Exercise(int number, String test, List<String> files, String registration, String scene, List<String> options) {
         Path scenePath() {
             return Path.of("src/exercises/scenes", scene);
+        }
+
+        /** The registration class's source, relative to a source folder. */
+        String registrationFile() {
+            return registration.replace('.', '/') + ".java";
         }
 
         /** True when the exercise's classes are in src/main: a student has done it. */
@@ -81,7 +89,8 @@ class ExerciseRegistrationTest {
             for (String f : e.files()) {
                 assertTrue(Files.isRegularFile(Path.of("src/solutions/java", f)), "exercise " + e.number() + ": its solution " + f);
             }
-            assertTrue(Files.isRegularFile(Path.of("src/solutions/registration", e.patch())), "exercise " + e.number() + ": " + e.patch());
+            assertTrue(Files.isRegularFile(Path.of("src/solutions/registration", e.registrationFile())),
+                       "exercise " + e.number() + ": its registration " + e.registrationFile());
             assertTrue(Files.isRegularFile(e.scenePath()), "exercise " + e.number() + ": its example scene " + e.scenePath());
         }
     }
@@ -104,35 +113,30 @@ class ExerciseRegistrationTest {
     }
 
     @Test
-    void theRegistrationsApplyCompileAndRenderTheExampleScenes(@TempDir Path dir) throws Exception {
+    void theRegistrationsCompileAndRenderTheExampleScenes(@TempDir Path dir) throws Exception {
         List<Exercise> exercises = exercises();
         List<Integer> done = exercises.stream().filter(Exercise::done).map(Exercise::number).toList();
         assumeTrue(done.isEmpty(), "exercises " + done + " are done in src/main: the reference registrations are checked "
                                    + "on the tree as shipped, not over a student's own");
         Path main = dir.resolve("src/main/java");
         copyTree(Path.of("src/main/java"), main);
-        // --ignore-whitespace: a checkout with Windows line ends still takes the patches' context
-        List<String> apply = new ArrayList<>(List.of("git", "apply", "--ignore-whitespace"));
+        Path resources = dir.resolve("resources");
+        copyTree(Path.of("src/main/resources"), resources);
+        // as a student does: the classes added beside src/main's, and one line each in the list of registrations
+        StringBuilder lines = new StringBuilder();
         for (Exercise e : exercises) {
             for (String f : e.files()) {
                 Files.copy(Path.of("src/solutions/java", f), main.resolve(f));
             }
-            apply.add(Path.of("src/solutions/registration", e.patch()).toAbsolutePath().toString());
+            Files.copy(Path.of("src/solutions/registration", e.registrationFile()), main.resolve(e.registrationFile()));
+            lines.append(e.registration()).append('\n');
         }
-        // in order, in one run: git applies each patch to what the earlier ones left
-        Process git;
-        try {
-            git = new ProcessBuilder(apply).directory(dir.toFile()).redirectErrorStream(true).start();
-        } catch (IOException e) {
-            assumeTrue(false, "git is not on the PATH, and the registrations are applied with git apply: " + e.getMessage());
-            return;
-        }
-        String gitSays = new String(git.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertEquals(0, git.waitFor(), "the registrations (src/solutions/registration) no longer apply to src/main/java: " + gitSays);
+        Files.writeString(resources.resolve(SERVICES), lines, StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.APPEND);
 
         Path classes = dir.resolve("classes");
         compile(main, classes);
-        URL[] urls = Stream.concat(Stream.of(classes), dependencies().stream()).map(ExerciseRegistrationTest::url).toArray(URL[]::new);
+        URL[] urls = Stream.concat(Stream.of(classes, resources), dependencies().stream()).map(ExerciseRegistrationTest::url)
+            .toArray(URL[]::new);
         try (URLClassLoader loader = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader())) {
             Method run = loader.loadClass("raytracer.cli.RenderCommand").getMethod("run", PrintWriter.class, String[].class);
             for (Exercise e : exercises) {

@@ -202,6 +202,64 @@ class TorusExercise {
     }
 
     /**
+     * A ray spawned from a hit along the normal, on the side the ray came from
+     * ({@code ShadeRec.spawnRay}, which starts it beyond the hit point's error bound), must not
+     * find the torus where it left it: along that line the torus lies at least 2b (across the tube)
+     * or 2 (a - b) (across the hole) away. A hit that leaves {@code hitError} at 0 starts the ray
+     * within the hit point's rounding, on either side of the surface, and half such rays hit the
+     * torus again at once (the shadow acne of the book's kEpsilon, chapter 16). Tori of every size
+     * from 1e-4 to 1e6, hit from outside, from up to 150 times their size away, and from inside the
+     * tube.
+     */
+    @Test
+    void raysSpawnedFromAHitLeaveTheSurface() {
+        SplittableRandom random = new SplittableRandom(23);
+        Ray spawned = new Ray();
+        int checked = 0;
+        for (int i = 0; i < 4000; i++) {
+            double size = Math.pow(10, -4 + 10 * random.nextDouble());
+            double a = size * (0.5 + random.nextDouble());
+            double b = a * (0.05 + 0.9 * random.nextDouble());
+            GeometricObject t = torus(a, b);
+            double[] o;
+            if (i % 4 == 0) {
+                // inside the tube: a point of the tube's centre circle, moved less than b off it
+                double phi = 2 * Math.PI * random.nextDouble();
+                double rho = a + 0.5 * b * (2 * random.nextDouble() - 1);
+                o = new double[] {rho * Math.cos(phi), 0.5 * b * (2 * random.nextDouble() - 1), rho * Math.sin(phi)};
+            } else {
+                double reach = 1.5 * (a + b) * Math.pow(10, 2 * random.nextDouble());
+                double[] u = unitVector(random);
+                o = new double[] {reach * u[0], reach * u[1], reach * u[2]};
+            }
+            double tx = (a + b) * (2 * random.nextDouble() - 1) - o[0];
+            double ty = b * (2 * random.nextDouble() - 1) - o[1];
+            double tz = (a + b) * (2 * random.nextDouble() - 1) - o[2];
+            double len = Math.sqrt(tx * tx + ty * ty + tz * tz);
+            ShadeRec sr = scratch.hit(t, ray(o[0], o[1], o[2], tx / len, ty / len, tz / len));
+            if (sr == null) {
+                continue;
+            }
+            checked++;
+            String from = "Torus(" + a + ", " + b + "), hit " + i + " at (" + sr.hitPoint.x + ", " + sr.hitPoint.y + ", " + sr.hitPoint.z
+                          + ") with hitError " + sr.hitError;
+            sr.spawnRay(sr.geometricNormal.x, sr.geometricNormal.y, sr.geometricNormal.z, spawned);
+            ShadeRec again = scratch.hit(t, spawned);
+            assertTrue(again == null || again.t >= Math.min(b, a - b), from + ": a ray spawned from the hit along its normal (facing the ray) "
+                       + "hits the torus again at t = " + (again == null ? 0 : again.t) + ", where no surface lies: hitError must "
+                       + "bound the hit point's rounding, so that the ray starts beyond it");
+        }
+        assertTrue(checked > 2000, "too few hits to judge: " + checked + " of 4000 rays (more than 2000 expected)");
+    }
+
+    private static double[] unitVector(SplittableRandom random) {
+        double z = 2 * random.nextDouble() - 1;
+        double phi = 2 * Math.PI * random.nextDouble();
+        double r = Math.sqrt(1 - z * z);
+        return new double[] {r * Math.cos(phi), r * Math.sin(phi), z};
+    }
+
+    /**
      * The first hit by sphere tracing (Hart 1996): step by the distance to the surface, which never
      * oversteps it. +infinity when the ray leaves for good, NaN when 100,000 steps did not settle.
      */

@@ -7,6 +7,9 @@
  * {@code materials}, ...) implement these; the renderer sees only these. A worker's scratch
  * ({@link raytracer.core.WorkerScratch}) lives here too, with its {@link raytracer.core.RayTreePolicy}
  * (made from the render's {@link raytracer.core.RayTreeSettings}) and what the families need per
- * worker, such as the BVH traversal state ({@link raytracer.core.TraversalStack}).
+ * worker, such as the BVH traversal state ({@link raytracer.core.TraversalStack}). The
+ * {@link raytracer.core.Registry} holds the named types that scene files and options choose from,
+ * each added by a {@link raytracer.core.Registration} and made from the entry's
+ * {@link raytracer.core.Parameters}, so that a family's new member registers itself.
  */
 package raytracer.core;

@@ -1,23 +1,22 @@
 package raytracer.samplers;
 
 import java.util.List;
+import raytracer.core.Registry;
 import raytracer.core.Sampler;
 
-/** Sampler patterns by the names scene files and options use. */
+/** Sampler patterns by the names scene files and options use: those of the {@link Registry}. */
 public final class Samplers {
-    private static final List<String> NAMES = List.of("regular", "random", "jittered", "n-rooks", "multi-jittered",
-                                                       "correlated-multi-jittered", "hammersley", "sobol");
-
     private Samplers() {
     }
 
+    /** The names, in the order they were registered. */
     public static List<String> names() {
-        return NAMES;
+        return Registry.standard().samplers().names();
     }
 
     /** The name of a sampler's pattern, as {@link #byName} takes it. */
     public static String nameOf(Sampler sampler) {
-        for (String name : NAMES) {
+        for (String name : names()) {
             if (byName(name).getClass() == sampler.getClass()) {
                 return name;
             }
@@ -26,17 +25,8 @@ public final class Samplers {
     }
 
     public static Sampler byName(String name) {
-        return switch (name) {
-            case "regular" -> new Regular();
-            case "random" -> new PureRandom();
-            case "jittered" -> new Jittered();
-            case "n-rooks" -> new NRooks();
-            case "multi-jittered" -> new MultiJittered();
-            case "correlated-multi-jittered" -> new CorrelatedMultiJittered();
-            case "hammersley" -> new Hammersley();
-            case "sobol" -> new Sobol();
-            default -> throw new IllegalArgumentException(
-                "unknown sampler '" + name + "'; allowed: " + String.join(", ", NAMES));
-        };
+        return Registry.standard().samplers().find(name)
+            .orElseThrow(() -> new IllegalArgumentException("unknown sampler '" + name + "'; allowed: " + String.join(", ", names())))
+            .make().get();
     }
 }

@@ -27,8 +27,12 @@ class OursFirstTest {
         assertTrue(clusterYaml != null && clusterYaml.endsWith("snakeyaml-2.5.jar"), "the build names SnakeYAML 2.5: " + clusterYaml);
         URL ourYaml = location(org.yaml.snakeyaml.LoaderOptions.class);
         URL ourClasses = location(raytracer.io.scene.SceneFile.class);
+        // the list of registered types, which render.jar holds beside the classes and a build keeps apart
+        String services = "META-INF/services/raytracer.core.Registration";
+        String found = raytracer.io.scene.SceneFile.class.getClassLoader().getResource(services).toString();
+        URL ourResources = new URL(found.substring(0, found.length() - services.length()));
         try (URLClassLoader cluster = new URLClassLoader(new URL[] {Path.of(clusterYaml).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
-             OursFirst loader = new OursFirst(new URL[] {ourClasses, ourYaml}, cluster)) {
+             OursFirst loader = new OursFirst(new URL[] {ourClasses, ourResources, ourYaml}, cluster)) {
             assertTrue(location(cluster.loadClass("org.yaml.snakeyaml.LoaderOptions")).getPath().endsWith("snakeyaml-2.5.jar"));
             Class<?> yaml = loader.loadClass("org.yaml.snakeyaml.LoaderOptions");
             assertEquals(ourYaml, location(yaml), "ours first");

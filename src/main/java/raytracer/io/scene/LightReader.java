@@ -3,10 +3,16 @@ package raytracer.io.scene;
 import java.util.OptionalInt;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.Factory;
 import raytracer.core.GeometricObject;
 import raytracer.core.Light;
+import raytracer.core.ParameterException;
+import raytracer.core.Parameters;
+import raytracer.core.Plugin;
+import raytracer.core.Registry;
 import raytracer.core.Sampler;
 import raytracer.core.World;
+import raytracer.lights.Ambient;
 import raytracer.lights.AreaLight;
 import raytracer.lights.Directional;
 import raytracer.lights.PointLight;
@@ -18,7 +24,10 @@ import raytracer.shapes.Disk;
 import raytracer.shapes.Rectangle;
 import raytracer.shapes.Sphere;
 
-/** One entry of the {@code lights} list: point, directional or an area light. */
+/**
+ * One entry of the {@code lights} list, of a type of the {@link Registry}: the built-in point,
+ * directional and area lights (made here, registered by {@link BuiltInTypes}) or a registered one.
+ */
 final class LightReader {
     private LightReader() {
     }
@@ -26,6 +35,12 @@ final class LightReader {
     static final int AREA_SAMPLES = 16;
     static final double AREA_RADIANCE = 1;
     static final double AREA_RADIUS = 1;
+    /** The keys of every light. */
+    private static final Set<String> COMMON = Set.of("type", "shadows");
+
+    /** What an area light needs beside its values: the world its visible shape joins, and the samples override. */
+    record Context(World world, OptionalInt areaLightSamples) {
+    }
 
     /**
      * Reads a light; an area light that is {@code visible} also adds its emitting shape to the world.
@@ -33,93 +48,90 @@ final class LightReader {
      */
     static Light read(Source source, Node node, World world, OptionalInt areaLightSamples) throws SceneException {
         String kind = YamlObject.peekType(source, node, "light", null);
-        YamlObject common = null;
-        Light light = switch (kind) {
-            case "point" -> {
-                YamlObject l = new YamlObject(source, node, "point light", Set.of("type", "position", "intensity", "color", "shadows"));
-                common = l;
-                double intensity = l.number("intensity", 1, 0, false);
-                RGBColor color = l.color("color", RGBColor.WHITE);
-                l.checkEmission("intensity", intensity, "color", color);
-                yield new PointLight(intensity, color, l.requiredPoint("position"));
-            }
-            case "directional" -> {
-                YamlObject l = new YamlObject(source, node, "directional light", Set.of("type", "direction", "radiance", "color", "shadows"));
-                common = l;
-                double radiance = l.number("radiance", 1, 0, false);
-                RGBColor color = l.color("color", RGBColor.WHITE);
-                l.checkEmission("radiance", radiance, "color", color);
-                try {
-                    yield new Directional(radiance, color, l.requiredVector("direction"));
-                } catch (IllegalArgumentException e) {
-                    throw source.error(l.raw("direction"), e.getMessage());
-                }
-            }
-            case "rectangle", "disk", "sphere" -> {
-                common = new YamlObject(source, node, kind + " light", areaKeys(kind));
-                yield area(common, kind, world, areaLightSamples);
-            }
-            default -> throw source.error(YamlObject.typeNode(node),
-                "unknown light type '" + kind + "'; allowed: directional, disk, point, rectangle, sphere");
-        };
-        light.setCastsShadows(common.bool("shadows", true));
+        Plugin<Factory<Light>> type = RegisteredType.find(Registry.standard().lights(), "light", kind, source, node);
+        YamlObject l = new YamlObject(source, node, kind + " light", RegisteredType.keys(COMMON, type));
+        Light light = new YamlParameters(l, new Context(world, areaLightSamples)).make(type.make(), node, "");
+        light.setCastsShadows(l.bool("shadows", true));
         return light;
     }
 
-    private static Set<String> areaKeys(String kind) {
-        Set<String> keys = new java.util.HashSet<>(Set.of("type", "radiance", "color", "samples", "visible", "shadows"));
-        keys.addAll(switch (kind) {
-            case "rectangle" -> Set.of("corner", "edge-a", "edge-b");
-            case "disk" -> Set.of("center", "normal", "radius");
-            default -> Set.of("center", "radius");
-        });
-        return keys;
+    static Light point(Parameters l) throws ParameterException {
+        double intensity = l.number("intensity", 1, 0, false);
+        RGBColor color = l.color("color", RGBColor.WHITE);
+        l.checkEmission("intensity", intensity, "color", color);
+        return new PointLight(intensity, color, l.requiredPoint("position"));
     }
 
-    /**
-     * An area light of radiance {@code radiance color}; the emitting shape, if visible, is an
-     * emissive object that casts no shadow (the light's own samples lie on it).
-     */
-    private static Light area(YamlObject l, String kind, World world, OptionalInt areaLightSamples) throws SceneException {
+    static Light directional(Parameters l) throws ParameterException {
+        double radiance = l.number("radiance", 1, 0, false);
+        RGBColor color = l.color("color", RGBColor.WHITE);
+        l.checkEmission("radiance", radiance, "color", color);
+        Vector3D direction = l.requiredVector("direction");
+        try {
+            return new Directional(radiance, color, direction);
+        } catch (IllegalArgumentException e) {
+            throw l.error("direction", e.getMessage());
+        }
+    }
+
+    /** The world's ambient light of the book (chapter 14): {@code ambient: {radiance, color}}. */
+    static Light constantAmbient(Parameters a) throws ParameterException {
+        double radiance = a.number("radiance", SceneLoader.AMBIENT_RADIANCE, 0, false);
+        RGBColor color = a.color("color", RGBColor.WHITE);
+        a.checkEmission("radiance", radiance, "color", color);
+        return new Ambient(radiance, color);
+    }
+
+    static Light rectangle(YamlParameters p) throws SceneException {
+        YamlObject l = p.values();
+        Emission e = emission(l, p.context(Context.class));
+        Point3D corner = l.requiredPoint("corner");
+        Vector3D a = l.requiredVector("edge-a");
+        Vector3D b = l.requiredVector("edge-b");
+        return visible(p, e, AreaLight.rectangle(corner, a, b, e.ls, e.color, e.samples), new Rectangle(corner, a, b));
+    }
+
+    static Light disk(YamlParameters p) throws SceneException {
+        YamlObject l = p.values();
+        Emission e = emission(l, p.context(Context.class));
+        Point3D center = l.requiredPoint("center");
+        Vector3D normal = l.requiredVector("normal");
+        double radius = l.number("radius", AREA_RADIUS, 0, true);
+        return visible(p, e, AreaLight.disk(center, normal, radius, e.ls, e.color, e.samples), new Disk(center, normal, radius));
+    }
+
+    static Light sphere(YamlParameters p) throws SceneException {
+        YamlObject l = p.values();
+        Emission e = emission(l, p.context(Context.class));
+        Point3D center = l.requiredPoint("center");
+        double radius = l.number("radius", AREA_RADIUS, 0, true);
+        return visible(p, e, AreaLight.sphere(center, radius, e.ls, e.color, e.samples), new Sphere(center, radius));
+    }
+
+    /** An area light's radiance {@code ls color} and its samples per shaded point. */
+    private record Emission(double ls, RGBColor color, int samples) {
+    }
+
+    private static Emission emission(YamlObject l, Context context) throws SceneException {
         double ls = l.number("radiance", AREA_RADIANCE, 0, false);
         RGBColor color = l.color("color", RGBColor.WHITE);
         l.checkEmission("radiance", ls, "color", color);
         int samples = l.integer("samples", AREA_SAMPLES, 1, Sampler.MAX_SAMPLES);
-        if (areaLightSamples.isPresent()) {
-            samples = areaLightSamples.getAsInt();
+        if (context.areaLightSamples().isPresent()) {
+            samples = context.areaLightSamples().getAsInt();
         }
-        Light light;
-        GeometricObject shape;
-        try {
-            switch (kind) {
-                case "rectangle" -> {
-                    Point3D corner = l.requiredPoint("corner");
-                    Vector3D a = l.requiredVector("edge-a");
-                    Vector3D b = l.requiredVector("edge-b");
-                    light = AreaLight.rectangle(corner, a, b, ls, color, samples);
-                    shape = new Rectangle(corner, a, b);
-                }
-                case "disk" -> {
-                    Point3D center = l.requiredPoint("center");
-                    Vector3D normal = l.requiredVector("normal");
-                    double radius = l.number("radius", AREA_RADIUS, 0, true);
-                    light = AreaLight.disk(center, normal, radius, ls, color, samples);
-                    shape = new Disk(center, normal, radius);
-                }
-                default -> {
-                    Point3D center = l.requiredPoint("center");
-                    double radius = l.number("radius", AREA_RADIUS, 0, true);
-                    light = AreaLight.sphere(center, radius, ls, color, samples);
-                    shape = new Sphere(center, radius);
-                }
-            }
-        } catch (IllegalArgumentException e) {
-            throw l.source().error(l.node(), e.getMessage());
-        }
-        if (l.bool("visible", true)) {
-            shape.setMaterial(new Emissive(ls, color, light));
+        return new Emission(ls, color, samples);
+    }
+
+    /**
+     * The area light; its emitting shape, if visible, is an emissive object that casts no shadow
+     * (the light's own samples lie on it).
+     */
+    private static Light visible(YamlParameters p, Emission e, Light light, GeometricObject shape) throws SceneException {
+        if (p.values().bool("visible", true)) {
+            shape.setMaterial(new Emissive(e.ls, e.color, light));
             shape.setCastsShadows(false);
-            world.addObject(shape);
+            p.context(Context.class).world().addObject(shape);
         }
         return light;
     }

@@ -7,7 +7,12 @@ import raytracer.brdf.FittedPreset;
 import raytracer.brdf.Ward;
 import raytracer.core.BRDF;
 import raytracer.core.Background;
+import raytracer.core.Factory;
 import raytracer.core.Material;
+import raytracer.core.ParameterException;
+import raytracer.core.Parameters;
+import raytracer.core.Plugin;
+import raytracer.core.Registry;
 import raytracer.core.Sampler;
 import raytracer.core.Texture;
 import raytracer.materials.Dielectric;
@@ -19,7 +24,10 @@ import raytracer.materials.Reflective;
 import raytracer.materials.ThinDielectric;
 import raytracer.math.RGBColor;
 
-/** One entry of the {@code materials} map, of any of the types listed in docs/scene-format.md. */
+/**
+ * One entry of the {@code materials} map, of a type of the {@link Registry}: the built-in ones
+ * (docs/scene-format.md) are made here and registered by {@link BuiltInTypes}.
+ */
 final class MaterialReader {
     static final double KA = 0.2;
     static final double KD = 0.8;
@@ -33,6 +41,8 @@ final class MaterialReader {
     static final double DIELECTRIC_EXPONENT = 1000;
     static final int GLOSSY_SAMPLES = 10;
 
+    private static final Set<String> COMMON = Set.of("type");
+
     private MaterialReader() {
     }
 
@@ -43,17 +53,27 @@ final class MaterialReader {
         return m;
     }
 
-    /** A fitted model: a preset by name, or explicit rho-d, rho-s and alpha / exponent. */
-    private static Material fitted(YamlObject m, String kind) throws SceneException {
-        FittedPreset.Model model = kind.equals("ward") ? FittedPreset.Model.WARD
-            : kind.equals("ward-duer") ? FittedPreset.Model.WARD_DUER : FittedPreset.Model.BLINN_PHONG;
+    /** The report's fitted models (section 2.2): a preset by name, or explicit rho-d, rho-s and alpha / exponent. */
+    static Material ward(Parameters m) throws ParameterException {
+        return fitted(m, FittedPreset.Model.WARD);
+    }
+
+    static Material wardDuer(Parameters m) throws ParameterException {
+        return fitted(m, FittedPreset.Model.WARD_DUER);
+    }
+
+    static Material blinnPhong(Parameters m) throws ParameterException {
+        return fitted(m, FittedPreset.Model.BLINN_PHONG);
+    }
+
+    private static Material fitted(Parameters m, FittedPreset.Model model) throws ParameterException {
         double ka = m.number("ka", 0, 0, false);
         boolean seed = m.bool("seed-compatible", false);
         if (m.has("preset")) {
             try {
-                return Fitted.of(FittedPreset.of(m.requiredString("preset"), model), ka, seed);
+                return Fitted.of(FittedPreset.of(m.string("preset", null), model), ka, seed);
             } catch (IllegalArgumentException e) {
-                throw m.source().error(m.raw("preset"), e.getMessage());
+                throw m.error("preset", e.getMessage());
             }
         }
         RGBColor rhoD = m.color("rho-d", RGBColor.gray(0.5));
@@ -98,53 +118,56 @@ final class MaterialReader {
 
     private static Material readUntextured(Source source, String name, Node node) throws SceneException {
         String kind = YamlObject.peekType(source, node, "material '" + name + "'", "matte");
-        Set<String> allowed = switch (kind) {
-            case "matte" -> Set.of("type", "ka", "kd", "color", "texture");
-            case "phong" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "normalized", "texture");
-            case "reflective" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "kr", "reflect-color",
-                                        "fresnel", "texture", "reflection-map");
-            case "dielectric" -> Set.of("type", "ior", "absorption", "ks", "exponent", "reflection-map");
-            case "thin-dielectric" -> Set.of("type", "ior", "ks", "exponent", "reflection-map");
-            case "glossy" -> Set.of("type", "ka", "kd", "color", "ks", "specular-color", "exponent", "samples", "normalized",
-                                    "texture", "reflection-map");
-            case "ward", "ward-duer" -> Set.of("type", "preset", "rho-d", "rho-s", "alpha", "ka", "seed-compatible");
-            case "blinn-phong" -> Set.of("type", "preset", "rho-d", "rho-s", "exponent", "ka", "seed-compatible");
-            default -> throw source.error(YamlObject.typeNode(node),
-                "unknown material type '" + kind + "'; allowed: blinn-phong, dielectric, glossy, matte, phong, reflective, "
-                + "thin-dielectric, ward, ward-duer");
-        };
-        YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", allowed);
-        if (kind.startsWith("ward") || kind.equals("blinn-phong")) {
-            return fitted(m, kind);
+        Plugin<Factory<Material>> type = RegisteredType.find(Registry.standard().materials(), "material", kind, source, node);
+        YamlObject m = new YamlObject(source, node, kind + " material '" + name + "'", RegisteredType.keys(COMMON, type));
+        return new YamlParameters(m, null).make(type.make(), node, "");
+    }
+
+    static Material dielectric(Parameters m) throws ParameterException {
+        return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
+                              m.number("ks", 0, 0, false), m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
+    }
+
+    static Material thinDielectric(Parameters m) throws ParameterException {
+        return new ThinDielectric(m.number("ior", IOR, 0, true), m.number("ks", 0, 0, false),
+                                  m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
+    }
+
+    static Material matte(Parameters m) throws ParameterException {
+        return new Matte(m.number("ka", KA, 0, false), m.number("kd", KD, 0, false), m.color("color", RGBColor.WHITE));
+    }
+
+    static Material phong(Parameters m) throws ParameterException {
+        Lit l = lit(m);
+        return new Phong(l.ka, l.kd, l.cd, l.ks, l.cs, l.exp, m.bool("normalized", false));
+    }
+
+    static Material glossy(Parameters m) throws ParameterException {
+        Lit l = lit(m);
+        return new GlossyReflector(l.ka, l.kd, l.cd, l.ks, l.cs, l.exp, m.integer("samples", GLOSSY_SAMPLES, 1, Sampler.MAX_SAMPLES),
+                                   m.bool("normalized", false));
+    }
+
+    static Material reflective(Parameters m) throws ParameterException {
+        Lit l = lit(m);
+        String fresnel = m.string("fresnel", "none");
+        if (!fresnel.equals("none") && !fresnel.equals("schlick")) {
+            throw m.error("fresnel", "unknown fresnel '" + fresnel + "'; allowed: none, schlick");
         }
-        if (kind.equals("dielectric")) {
-            return new Dielectric(m.number("ior", IOR, 0, true), m.color("absorption", RGBColor.BLACK),
-                                  m.number("ks", 0, 0, false), m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
-        }
-        if (kind.equals("thin-dielectric")) {
-            return new ThinDielectric(m.number("ior", IOR, 0, true), m.number("ks", 0, 0, false),
-                                      m.number("exponent", DIELECTRIC_EXPONENT, 0, true));
-        }
+        return new Reflective(l.ka, l.kd, l.cd, l.ks, l.cs, l.exp, m.number("kr", KR, 0, false), m.color("reflect-color", RGBColor.WHITE),
+                              fresnel.equals("schlick"));
+    }
+
+    /** The values of the book's lit materials beyond the matte's, read in this order: the diffuse and the specular term. */
+    private record Lit(double ka, double kd, RGBColor cd, double ks, RGBColor cs, double exp) {
+    }
+
+    private static Lit lit(Parameters m) throws ParameterException {
         double ka = m.number("ka", KA, 0, false);
         double kd = m.number("kd", KD, 0, false);
         RGBColor cd = m.color("color", RGBColor.WHITE);
-        if (kind.equals("matte")) {
-            return new Matte(ka, kd, cd);
-        }
         double ks = m.number("ks", KS, 0, false);
         RGBColor cs = m.color("specular-color", RGBColor.WHITE);
-        double exp = m.number("exponent", EXPONENT, 0, true);
-        if (kind.equals("phong")) {
-            return new Phong(ka, kd, cd, ks, cs, exp, m.bool("normalized", false));
-        }
-        if (kind.equals("glossy")) {
-            return new GlossyReflector(ka, kd, cd, ks, cs, exp, m.integer("samples", GLOSSY_SAMPLES, 1, Sampler.MAX_SAMPLES), m.bool("normalized", false));
-        }
-        String fresnel = m.string("fresnel", "none");
-        if (!fresnel.equals("none") && !fresnel.equals("schlick")) {
-            throw source.error(m.raw("fresnel"), "unknown fresnel '" + fresnel + "'; allowed: none, schlick");
-        }
-        return new Reflective(ka, kd, cd, ks, cs, exp, m.number("kr", KR, 0, false), m.color("reflect-color", RGBColor.WHITE),
-                              fresnel.equals("schlick"));
+        return new Lit(ka, kd, cd, ks, cs, m.number("exponent", EXPONENT, 0, true));
     }
 }

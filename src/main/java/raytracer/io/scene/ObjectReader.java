@@ -1,17 +1,20 @@
 package raytracer.io.scene;
 
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.TreeSet;
 import org.yaml.snakeyaml.nodes.MappingNode;
 import org.yaml.snakeyaml.nodes.Node;
 import org.yaml.snakeyaml.nodes.NodeTuple;
 import org.yaml.snakeyaml.nodes.ScalarNode;
 import org.yaml.snakeyaml.nodes.Tag;
+import raytracer.core.Factory;
 import raytracer.core.GeometricObject;
 import raytracer.core.Material;
+import raytracer.core.ParameterException;
+import raytracer.core.Parameters;
+import raytracer.core.Plugin;
+import raytracer.core.Registry;
 import raytracer.math.Matrix4;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
@@ -23,19 +26,25 @@ import raytracer.shapes.Plane;
 import raytracer.shapes.Sphere;
 import raytracer.shapes.Triangle;
 
-/** One entry of the {@code objects} list: a shape, its material and an optional transform. */
+/**
+ * One entry of the {@code objects} list: a shape of a type of the {@link Registry} (the built-in
+ * ones are made here and registered by {@link BuiltInTypes}), its material and an optional
+ * transform.
+ */
 final class ObjectReader {
     // and an optional name, by which an animation moves the object (Animation, SceneFile)
     private static final Set<String> COMMON = Set.of("type", "name", "material", "transform", "casts-shadows");
-    private static final Map<String, Set<String>> KEYS = Map.of(
-        "sphere", Set.of("center", "radius"),
-        "plane", Set.of("point", "normal"),
-        "box", Set.of("min", "max"),
-        "cylinder", Set.of("bottom", "top", "radius", "closed"),
-        "triangle", Set.of("vertices"),
-        "mesh", Set.of("file", "smooth", "bvh", "normal-map"));
 
     private ObjectReader() {
+    }
+
+    /**
+     * What a mesh needs beside its values: the scene's materials (the one it names replaces its
+     * file's), the report, the images, the meshes read so far, and whether a transform will be
+     * wrapped around it.
+     */
+    record Context(Map<String, Material> materials, LoadReport report, TextureReader textures, MeshReader meshes,
+                   boolean transformed) {
     }
 
     /**
@@ -47,24 +56,12 @@ final class ObjectReader {
                                 TextureReader textures, MeshReader meshes, Matrix4 motion, Node motionNode, String when)
             throws SceneException {
         String kind = YamlObject.peekType(source, node, "object", null);
-        Set<String> specific = KEYS.get(kind);
-        if (specific == null) {
-            throw source.error(YamlObject.typeNode(node), "unknown object type '" + kind + "'; allowed: "
-                               + String.join(", ", new TreeSet<>(KEYS.keySet())));
-        }
-        Set<String> allowed = new HashSet<>(COMMON);
-        allowed.addAll(specific);
-        YamlObject o = new YamlObject(source, node, kind, allowed);
-        GeometricObject shape;
-        if (kind.equals("mesh")) {
-            shape = meshes.read(o, o.has("material") ? material(o, materials) : null, report, textures,
-                                o.has("transform") || motion != null);
-        } else {
-            try {
-                shape = shape(kind, o);
-            } catch (IllegalArgumentException e) {
-                throw source.error(node, kind + ": " + e.getMessage());
-            }
+        Plugin<Factory<GeometricObject>> type = RegisteredType.find(Registry.standard().objects(), "object", kind, source, node);
+        YamlObject o = new YamlObject(source, node, kind, RegisteredType.keys(COMMON, type));
+        Context context = new Context(materials, report, textures, meshes, o.has("transform") || motion != null);
+        GeometricObject shape = new YamlParameters(o, context).make(type.make(), node, kind + ": ");
+        if (shape.getMaterial() == null) {
+            // a mesh has its material already: the one named, or its file's
             shape.setMaterial(material(o, materials));
         }
         shape.setCastsShadows(o.bool("casts-shadows", true));
@@ -105,21 +102,32 @@ final class ObjectReader {
         return null;
     }
 
-    private static GeometricObject shape(String kind, YamlObject o) throws SceneException {
-        return switch (kind) {
-            case "sphere" -> new Sphere(o.requiredPoint("center"), o.number("radius", 1, 0, true));
-            case "plane" -> {
-                Vector3D n = o.requiredVector("normal");
-                yield new Plane(o.point("point", Point3D.ORIGIN), new Normal(n.x(), n.y(), n.z()));
-            }
-            case "box" -> new Box(o.requiredPoint("min"), o.requiredPoint("max"));
-            case "cylinder" -> new Cylinder(o.number("bottom", 0), o.number("top", 1), o.number("radius", 1, 0, true),
-                                            o.bool("closed", true));
-            default -> triangle(o);
-        };
+    static GeometricObject sphere(Parameters o) throws ParameterException {
+        return new Sphere(o.requiredPoint("center"), o.number("radius", 1, 0, true));
     }
 
-    private static GeometricObject triangle(YamlObject o) throws SceneException {
+    static GeometricObject plane(Parameters o) throws ParameterException {
+        Vector3D n = o.requiredVector("normal");
+        return new Plane(o.point("point", Point3D.ORIGIN), new Normal(n.x(), n.y(), n.z()));
+    }
+
+    static GeometricObject box(Parameters o) throws ParameterException {
+        return new Box(o.requiredPoint("min"), o.requiredPoint("max"));
+    }
+
+    static GeometricObject cylinder(Parameters o) throws ParameterException {
+        return new Cylinder(o.number("bottom", 0), o.number("top", 1), o.number("radius", 1, 0, true), o.bool("closed", true));
+    }
+
+    /** A mesh object: the file's triangles, with the material named or the file's own (MeshReader). */
+    static GeometricObject mesh(YamlParameters p) throws SceneException {
+        Context c = p.context(Context.class);
+        YamlObject o = p.values();
+        return c.meshes().read(o, o.has("material") ? material(o, c.materials()) : null, c.report(), c.textures(), c.transformed());
+    }
+
+    static GeometricObject triangle(YamlParameters parameters) throws SceneException {
+        YamlObject o = parameters.values();
         List<Node> vertices = o.list("vertices");
         if (vertices.size() != 3) {
             throw o.source().error(o.required("vertices"), "'vertices' of a triangle must list 3 points, got " + vertices.size());

@@ -25,16 +25,18 @@ import org.yaml.snakeyaml.nodes.Node;
 import org.yaml.snakeyaml.parser.ParserImpl;
 import org.yaml.snakeyaml.resolver.Resolver;
 import raytracer.cache.MeshCache;
+import raytracer.core.Factory;
 import raytracer.core.Light;
 import raytracer.core.Material;
 import raytracer.core.PixelFilter;
+import raytracer.core.Plugin;
+import raytracer.core.Plugins;
 import raytracer.core.RayTreeSettings;
+import raytracer.core.Registry;
 import raytracer.core.Sampler;
 import raytracer.core.Tracer;
 import raytracer.core.ViewPlane;
 import raytracer.core.World;
-import raytracer.filters.Filters;
-import raytracer.filters.Gaussian;
 import raytracer.image.DisplayEncoding;
 import raytracer.image.Film;
 import raytracer.lights.Ambient;
@@ -53,8 +55,10 @@ public final class SceneLoader {
     static final Set<String> SECTIONS =
         Set.of("image", "tracer", "pass", "background", "environment", "camera", "ambient", "materials", "lights", "objects");
     static final double AMBIENT_RADIANCE = 0.1;
-    static final Set<String> IMAGE_KEYS = Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff", "encoding",
-                                                "filter", "filter-stddev");
+    /** The image section's keys: its own and those of the registered filters ({@code filter-stddev}). */
+    static final Set<String> IMAGE_KEYS = union(Registry.standard().filters().keys(),
+                                                Set.of("width", "height", "samples", "sampler", "max-depth", "exposure", "cutoff",
+                                                       "encoding", "filter"));
 
     /**
      * The most characters (Unicode code points) a scene file may hold. SnakeYAML's default, 3 MiB,
@@ -71,8 +75,12 @@ public final class SceneLoader {
     }
 
     private static Set<String> union(Set<String> names, String name) {
-        Set<String> all = new java.util.HashSet<>(names);
-        all.add(name);
+        return union(names, Set.of(name));
+    }
+
+    private static Set<String> union(Set<String> a, Set<String> b) {
+        Set<String> all = new java.util.HashSet<>(a);
+        all.addAll(b);
         return Set.copyOf(all);
     }
 
@@ -236,23 +244,25 @@ public final class SceneLoader {
                              readFilter(source, image));
     }
 
+    /**
+     * The image's filter, of the {@link Registry}'s, with its keys: a key of another filter (a
+     * width given to the box) is refused naming the filter that has it.
+     */
     private static PixelFilter readFilter(Source source, YamlObject image) throws SceneException {
         String name = image.string("filter", "box");
-        if (!Filters.names().contains(name)) {
-            throw source.error(image.raw("filter"), "unknown filter '" + name + "'; allowed: " + String.join(", ", Filters.names()));
+        Plugins<Factory<PixelFilter>> filters = Registry.standard().filters();
+        Plugin<Factory<PixelFilter>> filter = filters.find(name).orElseThrow(() -> source.error(image.raw("filter"), "unknown filter '"
+            + name + "'; allowed: " + String.join(", ", filters.names())));
+        for (String key : new java.util.TreeSet<>(filters.keys())) {
+            if (image.has(key) && !filter.keys().contains(key)) {
+                throw source.error(image.raw(key), "'" + key + "' in image is for filter: " + filters.withKey(key).orElseThrow().name()
+                                                   + ", not " + name);
+            }
         }
-        if (!image.has("filter-stddev")) {
-            return Filters.byName(name);
-        }
-        if (!name.equals("gaussian")) {
-            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image is for filter: gaussian, not " + name);
-        }
-        double stddev = image.number("filter-stddev", Gaussian.DEFAULT_STDDEV);
-        if (!Gaussian.allows(stddev)) {
-            throw source.error(image.raw("filter-stddev"), "'filter-stddev' in image must be " + Gaussian.MIN_STDDEV + " to "
-                               + Gaussian.MAX_STDDEV + " pixels, got " + stddev);
-        }
-        return new Gaussian(stddev);
+        // what a filter's constructor refuses is its width: the message goes to the key that gave it
+        Node where = filter.keys().stream().filter(image::has).findFirst().map(image::raw)
+            .orElse(image.has("filter") ? image.raw("filter") : image.node());
+        return new YamlParameters(image, null).make(filter.make(), where, "");
     }
 
     /**
@@ -302,15 +312,21 @@ public final class SceneLoader {
         return named.get();
     }
 
+    /**
+     * The world's ambient light: the book's constant one unless another is registered and chosen
+     * by {@code type}, a key only once there is a choice (so a scene's keys are checked as before).
+     */
     static Light readAmbient(Source source, YamlObject scene) throws SceneException {
         if (!scene.has("ambient")) {
             return new Ambient(AMBIENT_RADIANCE, RGBColor.WHITE);
         }
-        YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", Set.of("radiance", "color"));
-        double radiance = a.number("radiance", AMBIENT_RADIANCE, 0, false);
-        RGBColor color = a.color("color", RGBColor.WHITE);
-        a.checkEmission("radiance", radiance, "color", color);
-        return new Ambient(radiance, color);
+        Node node = scene.raw("ambient");
+        Plugins<Factory<Light>> ambients = Registry.standard().ambients();
+        boolean typed = ambients.names().size() > 1;
+        String kind = typed ? YamlObject.peekType(source, node, "ambient", "constant") : "constant";
+        Plugin<Factory<Light>> type = RegisteredType.find(ambients, "ambient", kind, source, node);
+        YamlObject a = new YamlObject(source, node, "ambient", RegisteredType.keys(typed ? Set.of("type") : Set.of(), type));
+        return new YamlParameters(a, null).make(type.make(), node, "");
     }
 
     static Map<String, Material> readMaterials(Source source, YamlObject scene, TextureReader textures)

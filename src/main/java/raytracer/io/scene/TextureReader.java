@@ -6,6 +6,11 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
+import raytracer.core.Factory;
+import raytracer.core.ParameterException;
+import raytracer.core.Parameters;
+import raytracer.core.Plugin;
+import raytracer.core.Registry;
 import raytracer.core.Texture;
 import raytracer.image.Film;
 import raytracer.image.ImageFiles;
@@ -16,10 +21,13 @@ import raytracer.textures.EnvironmentMap;
 import raytracer.textures.ImageTexture;
 
 /**
- * Textures ({@code texture: {type: checker | constant | image, ...}}) and environment maps
- * ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
+ * Textures ({@code texture: {type: checker | constant | image, ...}}, of the types of the
+ * {@link Registry}; the built-in ones are made here and registered by {@link BuiltInTypes}) and
+ * environment maps ({@code {file: x.hdr, intensity: 1}}). Each image file is read once per scene.
  */
 final class TextureReader {
+    private static final Set<String> COMMON = Set.of("type");
+
     /** The images read, by file: as colours, and as data (normal maps); the frames of an animation share them. */
     record Images(Map<Path, Film> colors, Map<Path, Film> data) {
         Images() {
@@ -52,22 +60,22 @@ final class TextureReader {
 
     Texture texture(Node node) throws SceneException {
         String kind = YamlObject.peekType(source, node, "texture", null);
-        switch (kind) {
-            case "checker" -> {
-                YamlObject t = new YamlObject(source, node, "checker texture", Set.of("type", "color-a", "color-b", "size"));
-                return new Checker(t.color("color-a", RGBColor.WHITE), t.color("color-b", RGBColor.gray(0.1)),
-                                   t.number("size", 0.1, 0, true));
-            }
-            case "constant" -> {
-                YamlObject t = new YamlObject(source, node, "constant texture", Set.of("type", "color"));
-                return new ConstantColor(t.color("color", RGBColor.WHITE));
-            }
-            case "image" -> {
-                YamlObject t = new YamlObject(source, node, "image texture", Set.of("type", "file"));
-                return new ImageTexture(image(t));
-            }
-            default -> throw source.error(YamlObject.typeNode(node), "unknown texture type '" + kind + "'; allowed: checker, constant, image");
-        }
+        Plugin<Factory<Texture>> type = RegisteredType.find(Registry.standard().textures(), "texture", kind, source, node);
+        YamlObject t = new YamlObject(source, node, kind + " texture", RegisteredType.keys(COMMON, type));
+        return new YamlParameters(t, this).make(type.make(), node, "");
+    }
+
+    static Texture checker(Parameters t) throws ParameterException {
+        return new Checker(t.color("color-a", RGBColor.WHITE), t.color("color-b", RGBColor.gray(0.1)), t.number("size", 0.1, 0, true));
+    }
+
+    static Texture constant(Parameters t) throws ParameterException {
+        return new ConstantColor(t.color("color", RGBColor.WHITE));
+    }
+
+    /** An image file, read once per scene by the reader that reads the texture. */
+    static Texture imageTexture(YamlParameters p) throws SceneException {
+        return new ImageTexture(p.context(TextureReader.class).image(p.values()));
     }
 
     EnvironmentMap environment(Node node, String what) throws SceneException {
