@@ -21,7 +21,6 @@ import org.openjdk.jmh.annotations.Warmup;
 import org.openjdk.jmh.infra.ThreadParams;
 import raytracer.accel.Aggregation;
 import raytracer.core.RayTreeSettings;
-import raytracer.core.ViewPlane;
 import raytracer.core.WorkerScratch;
 import raytracer.core.World;
 import raytracer.image.Film;

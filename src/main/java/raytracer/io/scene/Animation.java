@@ -168,8 +168,8 @@ final class Animation {
         }
         double fps = a.number("fps", DEFAULT_FPS, 0, true);
         if (fps < MIN_FPS || fps > MAX_FPS) {
-            throw source.error(a.raw("fps"), "'fps' in animation must be " + YamlObject.format(MIN_FPS) + " to "
-                               + YamlObject.format(MAX_FPS) + " (frames a second of the scene's time), got " + YamlObject.format(fps));
+            throw source.error(a.raw("fps"), "'fps' in animation must be " + YamlScalars.format(MIN_FPS) + " to "
+                               + YamlScalars.format(MAX_FPS) + " (frames a second of the scene's time), got " + YamlScalars.format(fps));
         }
         Map<String, Track> camera = new LinkedHashMap<>();
         boolean orbit = false;
@@ -191,9 +191,9 @@ final class Animation {
                 orbitNode = o.has("center") ? o.raw("center") : c.raw("orbit");
                 degrees = o.number("degrees", 360);
                 if (Math.abs(degrees) > MAX_ORBIT_DEGREES) {
-                    throw source.error(o.raw("degrees"), "'degrees' in orbit must be " + YamlObject.format(-MAX_ORBIT_DEGREES) + " to "
-                                       + YamlObject.format(MAX_ORBIT_DEGREES) + " (a turn a frame over " + MAX_FRAMES
-                                       + " frames, the most an animation has), got " + YamlObject.format(degrees));
+                    throw source.error(o.raw("degrees"), "'degrees' in orbit must be " + YamlScalars.format(-MAX_ORBIT_DEGREES) + " to "
+                                       + YamlScalars.format(MAX_ORBIT_DEGREES) + " (a turn a frame over " + MAX_FRAMES
+                                       + " frames, the most an animation has), got " + YamlScalars.format(degrees));
                 }
             } else {
                 camera = KeyTracks.read(source, c, frames, fps, CAMERA_CHANNELS, "camera key");

@@ -48,10 +48,10 @@ public final class ClosedFormReader {
             throw refuse(source, scene.has("camera") ? scene.raw("camera") : root, "the camera must be orthographic");
         }
         YamlObject camera = new YamlObject(source, scene.raw("camera"), "camera", AnyName.INSTANCE);
-        RGBColor ambientLight = RGBColor.WHITE.scale(SceneLoader.AMBIENT_RADIANCE);
+        RGBColor ambientLight = RGBColor.WHITE.scale(SettingsReader.AMBIENT_RADIANCE);
         if (scene.has("ambient")) {
             YamlObject a = new YamlObject(source, scene.raw("ambient"), "ambient", AnyName.INSTANCE);
-            ambientLight = a.color("color", RGBColor.WHITE).scale(a.number("radiance", SceneLoader.AMBIENT_RADIANCE));
+            ambientLight = a.color("color", RGBColor.WHITE).scale(a.number("radiance", SettingsReader.AMBIENT_RADIANCE));
         }
         List<Node> objects = scene.list("objects");
         if (objects.size() != 1 || !YamlObject.peekType(source, objects.get(0), "object", null).equals("plane")) {

@@ -64,8 +64,8 @@ final class KeyTracks {
     private static double keyFrame(Source source, YamlObject key) throws SceneException {
         double frame = key.requiredNumber("frame");
         if (Math.abs(frame) > Animation.MAX_KEY_FRAME) {
-            throw source.error(key.raw("frame"), "'frame' in " + key.what() + " must be " + YamlObject.format(-Animation.MAX_KEY_FRAME) + " to "
-                               + YamlObject.format(Animation.MAX_KEY_FRAME) + ", got " + YamlObject.format(frame));
+            throw source.error(key.raw("frame"), "'frame' in " + key.what() + " must be " + YamlScalars.format(-Animation.MAX_KEY_FRAME) + " to "
+                               + YamlScalars.format(Animation.MAX_KEY_FRAME) + ", got " + YamlScalars.format(frame));
         }
         return frame;
     }
@@ -76,8 +76,8 @@ final class KeyTracks {
         if (!(Math.abs(time * fps) <= Animation.MAX_KEY_FRAME)) {
             String most = seconds(Animation.MAX_KEY_FRAME / fps);
             throw source.error(key.raw("time"), "'time' in " + key.what() + " must be -" + most + " to " + most + " seconds at "
-                               + YamlObject.format(fps) + " fps (frames " + YamlObject.format(-Animation.MAX_KEY_FRAME) + " to "
-                               + YamlObject.format(Animation.MAX_KEY_FRAME) + "), got " + YamlObject.format(time));
+                               + YamlScalars.format(fps) + " fps (frames " + YamlScalars.format(-Animation.MAX_KEY_FRAME) + " to "
+                               + YamlScalars.format(Animation.MAX_KEY_FRAME) + "), got " + YamlScalars.format(time));
         }
         return time * fps;
     }

@@ -76,7 +76,7 @@ final class LightReader {
 
     /** The world's ambient light of the book (chapter 14): {@code ambient: {radiance, color}}. */
     static Light constantAmbient(Parameters a) throws ParameterException {
-        double radiance = a.number("radiance", SceneLoader.AMBIENT_RADIANCE, 0, false);
+        double radiance = a.number("radiance", SettingsReader.AMBIENT_RADIANCE, 0, false);
         RGBColor color = a.color("color", RGBColor.WHITE);
         a.checkEmission("radiance", radiance, "color", color);
         return new Ambient(radiance, color);

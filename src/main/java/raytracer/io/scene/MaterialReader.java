@@ -1,5 +1,7 @@
 package raytracer.io.scene;
 
+import java.util.Map;
+import java.util.LinkedHashMap;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.brdf.BlinnPhong;
@@ -169,5 +171,20 @@ final class MaterialReader {
         double ks = m.number("ks", KS, 0, false);
         RGBColor cs = m.color("specular-color", RGBColor.WHITE);
         return new Lit(ka, kd, cd, ks, cs, m.number("exponent", EXPONENT, 0, true));
+    }
+
+    /** The scene's materials section: each named material, in the file's order. */
+    static Map<String, Material> readAll(Source source, YamlObject scene, TextureReader textures)
+            throws SceneException {
+        Map<String, Material> materials = new LinkedHashMap<>();
+        if (!scene.has("materials")) {
+            return materials;
+        }
+        Node node = scene.raw("materials");
+        YamlObject names = new YamlObject(source, node, "materials", AnyName.INSTANCE);
+        for (Map.Entry<String, Node> entry : names.keyNodes().entrySet()) {
+            materials.put(entry.getKey(), read(source, entry.getKey(), names.raw(entry.getKey()), textures));
+        }
+        return materials;
     }
 }

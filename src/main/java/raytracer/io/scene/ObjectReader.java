@@ -94,7 +94,7 @@ final class ObjectReader {
                 if (!(tuple.getValueNode() instanceof ScalarNode value)
                     || value.getTag().equals(Tag.NULL)) {
                     throw source.error(tuple.getValueNode(), "'name' of an object must be a single value, got "
-                                       + YamlObject.describe(tuple.getValueNode()));
+                                       + YamlScalars.describe(tuple.getValueNode()));
                 }
                 return value.getValue();
             }
@@ -134,7 +134,7 @@ final class ObjectReader {
         }
         Point3D[] p = new Point3D[3];
         for (int i = 0; i < 3; i++) {
-            double[] t = YamlObject.triple(o.source(), vertices.get(i), "vertex " + (i + 1) + " of the triangle");
+            double[] t = YamlScalars.triple(o.source(), vertices.get(i), "vertex " + (i + 1) + " of the triangle");
             p[i] = new Point3D(t[0], t[1], t[2]);
         }
         return new Triangle(p[0], p[1], p[2]);
@@ -148,7 +148,7 @@ final class ObjectReader {
         Material m = materials.get(name);
         if (m == null) {
             throw o.source().error(o.raw("material"), "material '" + name + "' is not defined; defined: "
-                                   + (materials.isEmpty() ? "none" : YamlObject.names(materials.keySet())));
+                                   + (materials.isEmpty() ? "none" : YamlScalars.names(materials.keySet())));
         }
         return m;
     }

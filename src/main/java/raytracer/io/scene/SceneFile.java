@@ -49,8 +49,8 @@ public final class SceneFile {
         this.cache = cache;
         this.root = SceneLoader.root(source, text);
         this.scene = new YamlObject(source, root, "the scene", SceneLoader.FILE_SECTIONS);
-        this.viewPlane = SceneLoader.readImage(source, scene);
-        RayTreeSettings tree = RayTreeSettings.FULL_TREE.withCutoff(SceneLoader.readCutoff(source, scene));
+        this.viewPlane = SettingsReader.readImage(source, scene);
+        RayTreeSettings tree = RayTreeSettings.FULL_TREE.withCutoff(SettingsReader.readCutoff(source, scene));
         if (scene.has("pass")) {
             try {
                 tree = tree.withPass(ShadingPass.parse(scene.requiredString("pass")));
@@ -59,7 +59,7 @@ public final class SceneFile {
             }
         }
         this.rayTree = tree;
-        this.encoding = SceneLoader.readEncoding(source, scene);
+        this.encoding = SettingsReader.readEncoding(source, scene);
         this.animation = scene.has("animation")
             ? Animation.read(source, scene.raw("animation"), scene.has("camera")
                              && YamlObject.peekType(source, scene.raw("camera"), "camera", "pinhole").equals("orthographic"))
@@ -126,7 +126,7 @@ public final class SceneFile {
                 if (!named.containsKey(moved.getKey())) {
                     throw source.error(moved.getValue(), "the animation moves object '" + moved.getKey() + "', but no object has "
                                        + "that name; named: " + (named.isEmpty() ? "none (give an object name: ...)"
-                                                                                  : YamlObject.names(named.keySet())));
+                                                                                  : YamlScalars.names(named.keySet())));
                 }
             }
         }
@@ -190,7 +190,7 @@ public final class SceneFile {
             // the frame's camera is the file's with the animated values: a bad one says which frame
             throw animation == null ? e : new SceneException(e.getMessage() + " (the camera" + when + ")");
         }
-        World world = new World(viewPlane, camera, SceneLoader.readAmbient(source, scene));
+        World world = new World(viewPlane, camera, SettingsReader.readAmbient(source, scene));
         TextureReader textures = new TextureReader(source, report, images);
         world.setBackground(scene.color("background", RGBColor.BLACK));
         if (scene.has("environment")) {
@@ -200,14 +200,14 @@ public final class SceneFile {
                                   + "what rays that miss every object see");
             }
         }
-        Map<String, Material> materials = SceneLoader.readMaterials(source, scene, textures);
+        Map<String, Material> materials = MaterialReader.readAll(source, scene, textures);
         boolean areaLights = false;
         for (Node node : scene.list("lights")) {
             Light light = LightReader.read(source, node, world, areaLightSamples);
             areaLights |= light.hasExtent();
             world.addLight(light);
         }
-        world.setTracer(SceneLoader.readTracer(source, scene, areaLights));
+        world.setTracer(SettingsReader.readTracer(source, scene, areaLights));
         if (!scene.has("objects")) {
             throw source.error(root, "the scene has no 'objects' list");
         }

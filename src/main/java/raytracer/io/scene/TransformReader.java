@@ -91,7 +91,7 @@ final class TransformReader {
         }
         double[] m = new double[16];
         for (int i = 0; i < 16; i++) {
-            m[i] = YamlObject.number(source, seq.getValue().get(i), "matrix entry " + (i + 1));
+            m[i] = YamlScalars.number(source, seq.getValue().get(i), "matrix entry " + (i + 1));
         }
         if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
             throw source.error(value, "'matrix' must be affine: its last row must be 0, 0, 0, 1");

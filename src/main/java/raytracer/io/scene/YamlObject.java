@@ -30,7 +30,7 @@ final class YamlObject {
 
     YamlObject(Source source, Node node, String what, Collection<String> allowed) throws SceneException {
         if (!(node instanceof MappingNode mapping)) {
-            throw source.error(node, what + " must be a mapping of keys to values, got " + describe(node));
+            throw source.error(node, what + " must be a mapping of keys to values, got " + YamlScalars.describe(node));
         }
         this.source = source;
         this.node = node;
@@ -58,13 +58,13 @@ final class YamlObject {
      */
     static String peekType(Source source, Node node, String what, String fallback) throws SceneException {
         if (!(node instanceof MappingNode mapping)) {
-            throw source.error(node, what + " must be a mapping of keys to values, got " + describe(node));
+            throw source.error(node, what + " must be a mapping of keys to values, got " + YamlScalars.describe(node));
         }
         for (NodeTuple tuple : mapping.getValue()) {
             if (tuple.getKeyNode() instanceof ScalarNode key && key.getValue().equals("type")) {
                 if (!(tuple.getValueNode() instanceof ScalarNode value) || value.getTag().equals(Tag.NULL)) {
                     throw source.error(tuple.getValueNode(), "'type' of " + what + " must be a name, got "
-                                       + describe(tuple.getValueNode()));
+                                       + YamlScalars.describe(tuple.getValueNode()));
                 }
                 return value.getValue();
             }
@@ -126,18 +126,18 @@ final class YamlObject {
 
     private String scalarText(Node value, String key) throws SceneException {
         if (!(value instanceof ScalarNode scalar) || scalar.getTag().equals(Tag.NULL)) {
-            throw source.error(value, "'" + key + "' in " + what + " must be a single value, got " + describe(value));
+            throw source.error(value, "'" + key + "' in " + what + " must be a single value, got " + YamlScalars.describe(value));
         }
         return scalar.getValue();
     }
 
     double number(String key, double fallback) throws SceneException {
         Node value = values.get(key);
-        return value == null ? fallback : number(source, value, "'" + key + "' in " + what);
+        return value == null ? fallback : YamlScalars.number(source, value, "'" + key + "' in " + what);
     }
 
     double requiredNumber(String key) throws SceneException {
-        return number(source, required(key), "'" + key + "' in " + what);
+        return YamlScalars.number(source, required(key), "'" + key + "' in " + what);
     }
 
     /** A number that must be at least {@code min} (or above it, when {@code strict}). */
@@ -145,7 +145,7 @@ final class YamlObject {
         double v = has(key) ? requiredNumber(key) : fallback;
         if (strict ? !(v > min) : !(v >= min)) {
             throw source.error(has(key) ? raw(key) : node, "'" + key + "' in " + what + " must be "
-                               + (strict ? "greater than " : "at least ") + format(min) + ", got " + format(v));
+                               + (strict ? "greater than " : "at least ") + YamlScalars.format(min) + ", got " + YamlScalars.format(v));
         }
         return v;
     }
@@ -161,13 +161,13 @@ final class YamlObject {
         }
         double v = requiredNumber(key);
         if (v != Math.rint(v)) {
-            throw source.error(raw(key), "'" + key + "' in " + what + " must be a whole number, got " + format(v));
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be a whole number, got " + YamlScalars.format(v));
         }
         if (v < min) {
-            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + format(v));
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at least " + min + ", got " + YamlScalars.format(v));
         }
         if (v > max) {
-            throw source.error(raw(key), "'" + key + "' in " + what + " must be at most " + max + ", got " + format(v));
+            throw source.error(raw(key), "'" + key + "' in " + what + " must be at most " + max + ", got " + YamlScalars.format(v));
         }
         return (int) v;
     }
@@ -181,12 +181,12 @@ final class YamlObject {
             return Boolean.parseBoolean(scalar.getValue().toLowerCase(java.util.Locale.ROOT))
                    || scalar.getValue().equalsIgnoreCase("yes") || scalar.getValue().equalsIgnoreCase("on");
         }
-        throw source.error(value, "'" + key + "' in " + what + " must be true or false, got " + describe(value));
+        throw source.error(value, "'" + key + "' in " + what + " must be true or false, got " + YamlScalars.describe(value));
     }
 
     double[] triple(String key, double[] fallback) throws SceneException {
         Node value = values.get(key);
-        return value == null ? fallback : triple(source, value, "'" + key + "' in " + what);
+        return value == null ? fallback : YamlScalars.triple(source, value, "'" + key + "' in " + what);
     }
 
     Point3D point(String key, Point3D fallback) throws SceneException {
@@ -198,12 +198,12 @@ final class YamlObject {
     }
 
     Point3D requiredPoint(String key) throws SceneException {
-        double[] t = triple(source, required(key), "'" + key + "' in " + what);
+        double[] t = YamlScalars.triple(source, required(key), "'" + key + "' in " + what);
         return new Point3D(t[0], t[1], t[2]);
     }
 
     Vector3D requiredVector(String key) throws SceneException {
-        double[] t = triple(source, required(key), "'" + key + "' in " + what);
+        double[] t = YamlScalars.triple(source, required(key), "'" + key + "' in " + what);
         return new Vector3D(t[0], t[1], t[2]);
     }
 
@@ -257,7 +257,7 @@ final class YamlObject {
             return List.of();
         }
         if (!(value instanceof SequenceNode sequence)) {
-            throw source.error(value, "'" + key + "' in " + what + " must be a list, got " + describe(value));
+            throw source.error(value, "'" + key + "' in " + what + " must be a list, got " + YamlScalars.describe(value));
         }
         return new ArrayList<>(sequence.getValue());
     }
@@ -265,64 +265,6 @@ final class YamlObject {
     /** Keys in file order with their key nodes (for maps of names, such as materials). */
     Map<String, Node> keyNodes() {
         return keys;
-    }
-
-    static double number(Source source, Node value, String what) throws SceneException {
-        if (!(value instanceof ScalarNode scalar)
-            || !(scalar.getTag().equals(Tag.INT) || scalar.getTag().equals(Tag.FLOAT))) {
-            throw source.error(value, what + " must be a number, got " + describe(value));
-        }
-        String text = scalar.getValue().toLowerCase(java.util.Locale.ROOT);
-        if (text.endsWith(".nan") || text.endsWith(".inf")) {
-            throw source.error(value, what + " must be a finite number, got '" + scalar.getValue() + "'");
-        }
-        double v;
-        try {
-            v = Double.parseDouble(scalar.getValue().replace("_", ""));
-        } catch (NumberFormatException e) {
-            throw source.error(value, what + " must be a plain decimal number, got '" + scalar.getValue() + "'");
-        }
-        if (!Double.isFinite(v)) {
-            throw source.error(value, what + " must be a finite number, got '" + scalar.getValue() + "'");
-        }
-        return v;
-    }
-
-    static double[] triple(Source source, Node value, String what) throws SceneException {
-        if (!(value instanceof SequenceNode sequence) || sequence.getValue().size() != 3) {
-            throw source.error(value, what + " must be a list of 3 numbers [x, y, z], got " + describe(value));
-        }
-        double[] t = new double[3];
-        for (int i = 0; i < 3; i++) {
-            t[i] = number(source, sequence.getValue().get(i), what);
-        }
-        return t;
-    }
-
-    static String describe(Node value) {
-        if (value instanceof ScalarNode scalar) {
-            return scalar.getTag().equals(Tag.NULL) ? "nothing" : "'" + scalar.getValue() + "'";
-        }
-        if (value instanceof SequenceNode sequence) {
-            return "a list of " + sequence.getValue().size();
-        }
-        return "a mapping";
-    }
-
-    /** The most names a message lists; the rest are counted. */
-    static final int NAMES_LISTED = 10;
-
-    /**
-     * Names for a message, sorted: all of them, or the first {@value #NAMES_LISTED} and how many
-     * more (200,000 materials would otherwise make a line of 1.7 MB).
-     */
-    static String names(java.util.Collection<String> names) {
-        List<String> sorted = new ArrayList<>(new TreeSet<>(names));
-        if (sorted.size() <= NAMES_LISTED) {
-            return String.join(", ", sorted);
-        }
-        return String.join(", ", sorted.subList(0, NAMES_LISTED)) + String.format(java.util.Locale.ROOT, " and %,d more",
-                                                                                 sorted.size() - NAMES_LISTED);
     }
 
     /** A file named by {@code key}, resolved against the scene's folder; a name that is no path is an error at it. */
@@ -336,7 +278,4 @@ final class YamlObject {
         }
     }
 
-    static String format(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-    }
 }

@@ -14,7 +14,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.yaml.snakeyaml.nodes.Node;
 import raytracer.accel.MeshBVH;
-import raytracer.core.GeometricObject;
 import raytracer.core.World;
 import raytracer.image.Film;
 import raytracer.math.Point3D;
