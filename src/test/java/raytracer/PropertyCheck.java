@@ -44,7 +44,7 @@ public final class PropertyCheck {
         return new SplittableRandom(SEED ^ (0x9E3779B97F4A7C15L * (property.hashCode() + 31L * i + 1)));
     }
 
-    /** Log-uniform in [lo, hi]: every order of magnitude equally likely (STYLE.md: 1e-4..1e6). */
+    /** Log-uniform in [lo, hi]: every order of magnitude equally likely (scenes from 1e-4 to 1e6 units must render alike). */
     public static double logUniform(SplittableRandom random, double lo, double hi) {
         return Math.exp(random.nextDouble(Math.log(lo), Math.log(hi)));
     }

@@ -27,7 +27,7 @@ import raytracer.samplers.Samplers;
 /**
  * One pixel per operation (16 samples), on one thread. {@code scene=default}: the default scene
  * (mirror recursion, two lights with shadows); {@code scene=arealight-spheres}: the simple-scene
- * path of issue 13 (four objects, one area-light sample per pixel sample), where operations per
+ * path of the convergence study (four objects, one area-light sample per pixel sample), where operations per
  * millisecond times 16 is samples per millisecond. {@code sampler} overrides the scene's pattern
  * ({@code -p sampler=sobol}). With {@code -prof gc} it shows that the whole per-ray path, camera to
  * shading, allocates nothing. Run from the project folder (the area-light scene is read from

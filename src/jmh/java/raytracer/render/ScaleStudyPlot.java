@@ -137,7 +137,7 @@ public final class ScaleStudyPlot {
             series(medians, "ours no-cache", "rss_mb", "peak RSS, --no-cache"),
             series(medians, "ours cache-read", "peak_heap_mib", "peak heap, mesh cache read")));
         if (medians.containsKey("old no-cache")) {
-            memory.add(series(medians, "old no-cache", "peak_heap_mib", "peak heap before issue 26"));
+            memory.add(series(medians, "old no-cache", "peak_heap_mib", "peak heap, the old jar"));
         }
         if (medians.containsKey("mitsuba scalar_rgb")) {
             memory.add(series(medians, "mitsuba scalar_rgb", "rss_mb", "Mitsuba 3, peak RSS"));

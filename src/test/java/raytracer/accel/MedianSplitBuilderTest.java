@@ -57,7 +57,7 @@ class MedianSplitBuilderTest {
     }
 
     /**
-     * Issue 26: a mesh's triangle array carried through the build comes out in the leaf order, and
+     * A mesh's triangle array carried through the build comes out in the leaf order, and
      * the tree is the one built without it, serially and in parallel.
      */
     @Test

@@ -18,7 +18,7 @@ import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 
 /**
- * Messages of issue 25, item 14: every bad input is one line naming its file and line, bounded in
+ * Every bad input is one line naming its file and line, bounded in
  * length, with control and bidirectional characters of echoed names escaped; the same mistake has
  * the same exit status in both commands; what cannot be written is found before rendering.
  */

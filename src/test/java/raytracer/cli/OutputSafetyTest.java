@@ -25,7 +25,7 @@ import raytracer.image.Film;
 import raytracer.image.ImageWriters;
 
 /**
- * Nothing the user names is destroyed (issue 25, item 1): an output that is one of the run's inputs
+ * Nothing the user names is destroyed: an output that is one of the run's inputs
  * is refused, a symbolic link is written through to its target, a FIFO is written into and stays
  * one, and {@code --csv -} is standard output. Every case uses files this test makes; a device is
  * only looked at, never written.

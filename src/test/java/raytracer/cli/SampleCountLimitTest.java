@@ -15,7 +15,7 @@ import raytracer.io.scene.SceneException;
 import raytracer.io.scene.SceneLoader;
 
 /**
- * Sample counts near 2^31 used to overflow when rounded up to a square (issue 25, item 7): --spp
+ * Sample counts near 2^31 used to overflow when rounded up to a square: --spp
  * 2147483647 reported -2147479015 samples, a light or glossy material of 2147483647 samples took 0
  * and vanished, converge printed a negative count and exited 0. Every count is bounded where it is
  * read, and the message gives the limit.

@@ -61,7 +61,7 @@ class ImageFilesTest {
     }
 
     /**
-     * Issue 25, item 11: a JPEG cut short was accepted, its missing part filled with grey (a PNG cut
+     * A JPEG cut short was accepted, its missing part filled with grey (a PNG cut
      * short is refused); the decoder's warning now refuses it too. Made here from a small JPEG.
      */
     @Test

@@ -9,7 +9,7 @@ import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import org.junit.jupiter.api.Test;
 
-/** A failure's reason is words, never a bare path or "(null)" (issue 25, item 14). */
+/** A failure's reason is words, never a bare path or "(null)". */
 class IoReasonTest {
     @Test
     void reasonsAreWords() {

@@ -14,7 +14,7 @@ import raytracer.render.Renders;
 /**
  * Glass up to its silhouette. A camera ray tangent to an absorbing sphere touches it without
  * entering; taken as a hit on the back face, it was darkened by Beer's law over its whole way from
- * the camera, (0.082, 0.0067, 4.5e-5) where the background shows 1 (issue 22, part 4).
+ * the camera, (0.082, 0.0067, 4.5e-5) where the background shows 1.
  */
 class GlassSilhouetteTest {
     /** The regular sampler's one sample per pixel lies at the pixel centre, x and y in {-1, -0.5, 0, 0.5, 1}. */

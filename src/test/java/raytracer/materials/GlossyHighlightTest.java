@@ -27,7 +27,7 @@ import raytracer.shapes.Rectangle;
 import raytracer.tracers.AreaLighting;
 
 /**
- * A glossy surface gets its highlight from every light (issue 22: under an area light it had one
+ * A glossy surface gets its highlight from every light (under an area light it had one
  * only where its glossy rays happened to hit the light's visible surface, so none from an
  * invisible light, at max depth 0, in the direct pass or where the cutoff pruned the rays).
  * Where its glossy rays cannot find the light, the glossy material's image is Phong's for the same

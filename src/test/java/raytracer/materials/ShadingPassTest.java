@@ -101,8 +101,8 @@ class ShadingPassTest {
     }
 
     /**
-     * A glossy sphere's rays see the magenta environment in that pass as the mirror's do (issue 22:
-     * they saw the scene's background): it adds the glossy weight's average times (1, 0, 1) to the
+     * A glossy sphere's rays see the magenta environment in that pass as the mirror's do (they
+     * saw the scene's background): it adds the glossy weight's average times (1, 0, 1) to the
      * direct pass, where the full image adds it times the blue background. Its 4 rays are drawn
      * alike in every pass (the same pixel, sample and seed), so the identity holds ray for ray.
      */

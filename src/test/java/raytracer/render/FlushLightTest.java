@@ -39,7 +39,7 @@ import raytracer.shapes.mesh.Mesh;
 import raytracer.tracers.AreaLighting;
 
 /**
- * A light lying in a surface lights the floor as if the surface were not there (issue 22, the
+ * A light lying in a surface lights the floor as if the surface were not there (the
  * lamp of a Cornell box modelled flush with its ceiling: the floor had 2% of its light). A floor
  * at y = 0 seen from above by an orthographic camera at max depth 0, a light at y = 2 (a
  * rectangle, the same turned about y, a disk, a point, a sphere whose lowest point is at y = 2,

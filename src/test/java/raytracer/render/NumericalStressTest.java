@@ -93,7 +93,7 @@ class NumericalStressTest {
      * Flat meshes on coordinate planes and a tilted one through the origin give the image of the
      * same surfaces made analytic, at every scale and offset: a floor, a wall and boxes of
      * triangles at y = 0 shadowed themselves where the hit's error bound along the normal is 0
-     * (issue 22: 42% of the floor's lit pixels black under a point light).
+     * (42% of the floor's lit pixels black under a point light).
      */
     @ParameterizedTest(name = "{0} at scale {1}, offset {2}")
     @MethodSource("flatCases")

@@ -134,7 +134,7 @@ final class StressScenes {
 
     /**
      * Flat surfaces that lie in coordinate planes, where a hit's error bound along the normal is 0
-     * (issue 22: shadow acne on a floor mesh at y = 0): a floor quad at y = 0 (at offset 0), a back
+     * (shadow acne on a floor mesh at y = 0): a floor quad at y = 0 (at offset 0), a back
      * wall at z = -2, a box of twelve triangles resting on the floor and a thin plate of quads
      * standing on it, under a point light and a directional one. With {@code meshes} false the
      * same surfaces are analytic (rectangles, a box), the reference the meshes must match.

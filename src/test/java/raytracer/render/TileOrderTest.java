@@ -54,7 +54,7 @@ class TileOrderTest {
     }
 
     /**
-     * Issue 26: the tiles whose camera rays can meet the most objects come first in each half (the
+     * The tiles whose camera rays can meet the most objects come first in each half (the
      * bench dragon's first tiles were floor alone, and the JIT compiled the slab and triangle tests
      * without the camera rays' branches); with all tiles alike the order is the spread itself.
      */

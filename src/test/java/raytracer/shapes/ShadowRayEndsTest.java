@@ -29,7 +29,7 @@ import raytracer.shapes.mesh.TriangleMesh;
  * A shadow ray aimed at a point q of a surface (a light's point lying in a ceiling, on a wall, on
  * a box's face) ends on that surface: the surface touches the ray's end and must not block it,
  * whatever the shape, its scale (1e-4 to 1e6), its distance from the origin (up to 1e6) and the
- * ray's angle (issue 22: a lamp flush with its ceiling lit the floor with 2% of its light). The
+ * ray's angle (a lamp flush with its ceiling lit the floor with 2% of its light). The
  * ray is made as the renderer makes it ({@link ShadeRec#spawnRayTo}) from a point o off the
  * surface, on its outside for closed shapes, at least 5 degrees from grazing. Three checks:
  * <ul>

@@ -17,7 +17,7 @@ import raytracer.math.ShearedRay;
  * outside, except where the paper's t lies within rounding of 0 (a ray starting on the
  * triangle's plane), which ours rejects. And a ray that starts on a triangle's plane, as one
  * spawned from a flat mesh on a coordinate plane does (its error bound along the normal is 0),
- * never hits it, at any scale or offset: the shadow acne of flat floors (issue 22).
+ * never hits it, at any scale or offset: the shadow acne of flat floors.
  */
 class WatertightTest {
     private final ShadeRec sr = new HitTesting().record();

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * MTL and OBJ values are range-checked as a scene's YAML values are (issue 25, item 9): before,
+ * MTL and OBJ values are range-checked as a scene's YAML values are: before,
  * Kd -5 put negative radiance in the image, Kd or Ke 1e400 parsed as infinity and every sample of
  * the object was dropped, vn 1e300 overflowed the float normal to NaN, all with exit 0. Each is
  * now one error naming the file and line.

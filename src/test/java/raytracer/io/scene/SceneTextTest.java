@@ -74,7 +74,7 @@ class SceneTextTest {
     /**
      * A scene file that never ends (/dev/zero, only read here) or is longer than the limit through a
      * pipe is read only up to the limit, then refused with it: before, /dev/zero was read for 17 s
-     * until the heap ran out (issue 25, item 3).
+     * until the heap ran out.
      */
     @Test
     void aSceneThatNeverEndsStopsAtTheLimit(@TempDir Path dir) throws Exception {

@@ -8,7 +8,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * Issue 26: a parse is put in its tree's leaf order without a copy of its triangles: the median
+ * A parse is put in its tree's leaf order without a copy of its triangles: the median
  * builder moves the triangle array with the boxes, and {@link ParsedMesh#afterTrianglesMoved} does
  * the rest. The result must be {@link Mesh#reordered}'s (checked by TriangleMeshTest), value for value,
  * whatever the permutation and whichever attributes the mesh has.
