@@ -34,7 +34,7 @@ import raytracer.cli.ErrorReport;
  * the window's pixels back from the server once the render is done and then presses Esc. The window
  * shows exactly the PNG's pixels, or their reduction where the image is larger than the screen; Esc
  * or the close button during the render exits as SIGINT does and keeps the earlier file. Skipped,
- * saying why, only where Xvfb is not installed ({@code tools/ensure-xvfb} installs it). On a
+ * saying why, only where Xvfb is not installed ({@code tools/ci/ensure-xvfb} installs it). On a
  * mismatch the capture, the file's pixels and their difference are left in build/show-window-test.
  */
 class ShowWindowTest {
@@ -51,7 +51,7 @@ class ShowWindowTest {
     static void startXvfb() throws Exception {
         String xvfb = onPath("Xvfb");
         Assumptions.assumeTrue(xvfb != null, "Xvfb is not installed, so --show cannot be tested on a display "
-                                             + "(tools/ensure-xvfb installs it: apt-get install xvfb)");
+                                             + "(tools/ci/ensure-xvfb installs it: apt-get install xvfb)");
         Path log = Files.createTempFile("xvfb", ".log");
         log.toFile().deleteOnExit();
         large = startXvfb(xvfb, "640x480x24", log);

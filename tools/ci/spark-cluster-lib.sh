@@ -1,4 +1,4 @@
-# Sourced by tools/spark-cluster-test and tools/spark-measure: pyspark 4.1.3 in a virtual environment,
+# Sourced by tools/ci/spark-cluster-test and tools/studies/spark-measure/run: pyspark 4.1.3 in a virtual environment,
 # and a standalone master and two one-core workers on 127.0.0.1, each started as a background job of
 # its own process group (the caller runs `set -m`), all stopped by those ids by stop_all.
 #   needs: fail MESSAGE (the caller's), $work (a folder), $keep (empty: remove $work at the end)
@@ -17,7 +17,7 @@ ensure_spark() {
   SPARK_HOME=$("$venv/bin/python" -c "import os, pyspark; print(os.path.dirname(pyspark.__file__))")
   export SPARK_HOME
   export SPARK_LOCAL_IP=127.0.0.1
-  tools/ensure-gradle >/dev/null || fail "gradle is missing and could not be installed"
+  tools/ci/ensure-gradle >/dev/null || fail "gradle is missing and could not be installed"
   gradle -q --console=plain jar sparkJar >/dev/null 2>&1 || fail "gradle jar sparkJar"
   mkdir -p "$work/conf" "$work/logs"
   # Spark's own log at WARN (driver, master, workers and executors read this folder)
