@@ -1,7 +1,9 @@
-# Sourced by tools/ci/spark-cluster-test and tools/studies/spark-measure/run: pyspark 4.1.3 in a virtual environment,
-# and a standalone master and two one-core workers on 127.0.0.1, each started as a background job of
-# its own process group (the caller runs `set -m`), all stopped by those ids by stop_all.
-#   needs: fail MESSAGE (the caller's), $work (a folder), $keep (empty: remove $work at the end)
+# Sourced by tools/ci/spark-cluster-test and tools/studies/spark-measure/run: pyspark 4.1.3 in a
+# virtual environment, and a standalone master and two one-core workers on 127.0.0.1, each started as
+# a background job of its own process group (the caller runs `set -m`), all stopped by those ids by
+# stop_all.
+#   needs: fail MESSAGE (the caller's), $work (a folder), $keep (empty: remove $work at the end);
+#          $me, the caller's name in messages, if it has one (else the script's file name)
 # defines: SPARK_HOME, SPARK_CONF_DIR, $master, $workers (pids), $groups (pids of process groups)
 
 PYSPARK_VERSION=4.1.3
@@ -10,7 +12,7 @@ venv=${RAYTRACER_PYSPARK_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/raytracer/pyspark
 # pyspark installed if missing, SPARK_HOME and SPARK_LOCAL_IP set, the jars built
 ensure_spark() {
   if ! "$venv/bin/python" -c "import pyspark, sys; sys.exit(pyspark.__version__ != '$PYSPARK_VERSION')" 2>/dev/null; then
-    echo "$(basename "$0"): installing pyspark $PYSPARK_VERSION into $venv (about 500 MB)" >&2
+    echo "${me:-$(basename "$0")}: installing pyspark $PYSPARK_VERSION into $venv (about 500 MB)" >&2
     python3 -m venv "$venv" || fail "cannot make a virtual environment in $venv (apt-get install python3-venv?)"
     "$venv/bin/pip" install -q "pyspark==$PYSPARK_VERSION" || fail "cannot install pyspark==$PYSPARK_VERSION from PyPI"
   fi
@@ -85,5 +87,5 @@ start_cluster() {
     sleep 0.5
   done
   [ "$(alive_workers)" = 2 ] || fail "the two workers did not register with the master in 60 s (logs in $work/logs)"
-  echo "$(basename "$0"): a master (${groups[0]}) and two workers (${workers[*]}) of 1 core each on 127.0.0.1" >&2
+  echo "${me:-$(basename "$0")}: a master (${groups[0]}) and two workers (${workers[*]}) of 1 core each on 127.0.0.1" >&2
 }

@@ -23,7 +23,7 @@ import raytracer.image.chart.BarChart;
  * The allocation study's plot and table (docs/performance.md), from the JSON files JMH wrote for
  * {@link AllocationStudyBenchmark} ({@code -rf json -rff FILE}). The files may hold the same
  * configuration (workload, threads, JVM, collector, mode) more than once, one round each
- * (tools/allocation-study): its iterations are pooled, and the error recomputed over all of them as
+ * (tools/studies/allocation-study/run): its iterations are pooled, and the error recomputed over all of them as
  * JMH computes it for one file, the half-width of the 99.9% confidence interval of the mean
  * (Student's t). Draws grouped bars of throughput with that error, one panel per workload, and
  * prints a Markdown table of throughput, allocation and collection, and the speed-ups of reuse

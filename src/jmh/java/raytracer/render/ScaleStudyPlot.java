@@ -21,7 +21,7 @@ import raytracer.image.chart.Series;
 
 /**
  * The scale study's log-log plot and table (docs/performance.md, "Meshes of tens of millions of
- * triangles"), from the rows tools/scale-study appends to its runs.csv: per mesh size and
+ * triangles"), from the rows tools/studies/scale-study/run appends to its runs.csv: per mesh size and
  * configuration (ours without the cache, writing it, reading it; the old jar; Mitsuba 3) the
  * median of the rounds. Two panels: times (parse, build, render, whole process) and memory (peak
  * heap, largest heap after a collection, peak RSS) against the triangle count, each with a grey

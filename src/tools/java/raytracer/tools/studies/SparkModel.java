@@ -1,3 +1,5 @@
+package raytracer.tools.studies;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,21 +14,21 @@ import raytracer.image.chart.LogLogChart;
 import raytracer.image.chart.Series;
 
 /**
- * The figures of docs/distributed.md from the runs tools/spark-measure wrote: the wall times and
- * their ratios round by round, the cost of a task, and a model of a render on N one-core executors
- * made of those figures alone, checked against the two-worker cluster's measured time. Prints the
- * figures as Markdown and draws two charts with the project's own chart code.
- *   java -cp build/libs/render.jar tools/SparkModel.java docs/distributed/measurements.tsv docs/figures
+ * The figures of docs/distributed.md from the runs tools/studies/spark-measure/run wrote: the wall
+ * times and their ratios round by round, the cost of a task, and a model of a render on N one-core
+ * executors made of those figures alone, checked against the two-worker cluster's measured time.
+ * Prints the figures as Markdown and draws two charts with the project's own chart code.
+ *   tools/studies/spark-measure/spark-model docs/distributed/measurements.tsv docs/figures
  */
 public final class SparkModel {
-    /** The turntable of tools/spark-measure: its frame count, and the still's pixels and samples. */
+    /** The turntable of the Spark measurements: its frame count, and the still's pixels and samples. */
     private static final int FRAMES = 120;
     private static final double STILL_SAMPLES = 960.0 * 640 * 64;
-    /** The poster of the issue: 8k (7680x4320) at 256 samples a pixel. */
+    /** The poster the model is asked about: 8k (7680x4320) at 256 samples a pixel. */
     private static final double POSTER_PIXELS = 7680.0 * 4320;
     private static final double POSTER_SAMPLES = POSTER_PIXELS * 256;
     private static final double STILL_PIXELS = 960.0 * 640;
-    /** Cores of the machine the figures were measured on (tools/spark-measure's one JVM renders on 2 threads). */
+    /** Cores of the machine the figures were measured on (the measurements' one JVM renders on 2 threads). */
     private static final int CORES = 2;
     /** SparkRender's default for a still: three tile runs per core. */
     private static final int RUNS_PER_CORE = 3;

@@ -1,3 +1,5 @@
+package raytracer.tools.bench;
+
 import java.io.DataInputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;
@@ -10,7 +12,9 @@ import java.nio.file.Path;
  * (old code, seed 1), B (old code, seed 2) and C (new code, seed 1), prints the relative RMSE of
  * B and of C against A, their ratio, the relative difference of the means of C and A, and how many
  * pixels changed at all. A ratio near 1 with a mean within the noise is "unchanged within noise";
- * a scene without noise (B equal to A) shows its changes as pixels. Run by tools/figure-noise.
+ * a scene without noise (B equal to A) shows its changes as pixels. Run by the figures workload of
+ * tools/bench/ab. The PFMs are read here, not by the jars' own code, so that the reader is the same
+ * whichever jars are compared.
  */
 public final class FigureNoise {
     public static void main(String[] args) throws IOException {

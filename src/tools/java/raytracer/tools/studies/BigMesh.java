@@ -1,3 +1,5 @@
+package raytracer.tools.studies;
+
 import java.io.BufferedOutputStream;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -21,7 +23,9 @@ import java.util.zip.GZIPInputStream;
  * its BVH is the scan's, only deeper. Written as OBJ text ({@code .obj}) or binary little-endian
  * PLY ({@code .ply}).
  *
- *   java tools/BigMesh.java IN.obj[.gz] TRIANGLES OUT.obj|OUT.ply
+ *   java -cp build/libs/render-tools.jar raytracer.tools.studies.BigMesh IN.obj[.gz] TRIANGLES OUT.obj|OUT.ply
+ *
+ * (tools/studies/scale-study/big-mesh runs it on the dragon.)
  *
  * k is the whole number whose k^2 x 871,414 (the dragon's) comes nearest TRIANGLES, so that
  * 4, 16 and 32 million give k = 2, 4, 6: 3.5, 13.9 and 31.4 million.
@@ -29,7 +33,7 @@ import java.util.zip.GZIPInputStream;
 public final class BigMesh {
     public static void main(String[] args) throws IOException {
         if (args.length != 3) {
-            System.err.println("usage: java tools/BigMesh.java IN.obj[.gz] TRIANGLES OUT.obj|OUT.ply");
+            System.err.println("usage: BigMesh IN.obj[.gz] TRIANGLES OUT.obj|OUT.ply");
             System.exit(2);
         }
         Path in = Path.of(args[0]);
@@ -57,7 +61,7 @@ public final class BigMesh {
         System.err.printf("%s: %d triangles cut %d x %d: %d vertices, %d triangles%n", in, triangles, k, k, grid.vertices,
                           grid.triangleCount);
         // written beside it and renamed when whole, so that a killed run leaves no truncated mesh that
-        // tools/scale-study, which reuses what it finds, would then measure
+        // the scale study, which reuses what it finds, would then measure
         Path partial = out.resolveSibling(out.getFileName() + ".partial");
         if (out.toString().endsWith(".ply")) {
             grid.writePly(partial);
@@ -255,7 +259,7 @@ public final class BigMesh {
 
         void writePly(Path out) throws IOException {
             try (OutputStream o = new BufferedOutputStream(Files.newOutputStream(out), 1 << 20)) {
-                o.write(("ply\nformat binary_little_endian 1.0\ncomment made by tools/BigMesh.java\nelement vertex " + vertices
+                o.write(("ply\nformat binary_little_endian 1.0\ncomment made by BigMesh\nelement vertex " + vertices
                          + "\nproperty float x\nproperty float y\nproperty float z\nelement face " + triangleCount
                          + "\nproperty list uchar int vertex_indices\nend_header\n").getBytes(StandardCharsets.US_ASCII));
                 ByteBuffer b = ByteBuffer.allocate(1 << 16).order(ByteOrder.LITTLE_ENDIAN);

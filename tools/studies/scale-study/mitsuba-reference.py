@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Mitsuba 3 on the frame tools/scale-study renders (docs/performance.md, "Meshes of tens of
+"""Mitsuba 3 on the frame tools/studies/scale-study/run renders (docs/performance.md, "Meshes of tens of
 millions of triangles"): an OBJ mesh under a pinhole camera (eye (0, 0.12, 0.3), looking at
 (0, 0.12, 0), 40 degrees vertically), one point light, a diffuse material, 1 sample per pixel,
 direct lighting with one light sample (a camera ray and a shadow ray per pixel, as our ray-cast
 frame), written as EXR. A reference for time and memory only: Mitsuba's own loader, BVH and
 integrator, not our image.
 
-    python3 tools/mitsuba-reference.py MESH.obj [WIDTH HEIGHT] [VARIANT]
+    python3 tools/studies/scale-study/mitsuba-reference.py MESH.obj [WIDTH HEIGHT] [VARIANT]
 
 Prints one line: "mitsuba VARIANT: load S s, render S s, peak RSS MiB" (load: reading the OBJ and
 building the acceleration structure, as mi.load_dict does both).
