@@ -64,6 +64,11 @@ public final class ShadeRec {
     /** The point and unit normal of the last area-light sample. */
     public final MutableVec3 lightPoint = new MutableVec3();
     public final MutableVec3 lightNormal = new MutableVec3();
+    /**
+     * The density, over the light's area, with which its sampling picked that point (a light that
+     * samples by solid angle gives it as pdf_omega cos(theta_light) / d^2), for {@link Light#pdf}.
+     */
+    public double lightPdf;
 
     public ShadeRec(World world, WorkerScratch scratch) {
         this.world = world;

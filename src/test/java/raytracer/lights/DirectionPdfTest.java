@@ -52,7 +52,7 @@ class DirectionPdfTest {
                 assertTrue(hit == null || !border, "the grid must hold the whole light");
                 if (hit != null) {
                     double cosAlpha = 1 / len;
-                    sum += light.directionPdf(hit[0], hit[1]) * cosAlpha * cosAlpha * cosAlpha * h * h;
+                    sum += light.directionPdf(p.x(), p.y(), p.z(), hit[0], hit[1]) * cosAlpha * cosAlpha * cosAlpha * h * h;
                     hits++;
                 }
             }
