@@ -131,6 +131,23 @@ class AreaLightTest {
     }
 
     /**
+     * Close up, where sampling by solid angle differs most from sampling by area: a sphere of
+     * radius 1 whose lowest point is 0.1 above the floor (E = pi Le (R / d)^2 still, the sphere
+     * being wholly above the horizon) and the 2 x 1 rectangle 0.25 above it, one sample each.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"sphere", "rectangle"})
+    void closeLightsMatchTheAnalyticIrradiance(String kind) {
+        boolean sphere = kind.equals("sphere");
+        AreaLight light = sphere ? AreaLight.sphere(new Point3D(0, 1.1, 0), 1, 2, RGBColor.WHITE, 1)
+            : AreaLight.rectangle(new Point3D(-1, 0.25, -0.5), new Vector3D(2, 0, 0), new Vector3D(0, 0, 1), 3, RGBColor.WHITE, 1);
+        double expected = sphere ? 2 / (1.1 * 1.1) : rectangleExpected(3, 1, 0.5, 0.25);
+        double[] e = estimate(light);
+        assertEquals(expected, e[0], 4 * e[1] + 1e-6, kind + ": mean " + e[0] + " +- " + e[1]);
+        assertTrue(e[1] < 0.02 * expected, "the estimate should be reasonably precise: " + e[1]);
+    }
+
+    /**
      * The book's estimator without a render: the mean over a fine stratified grid of samples of
      * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
      * the density of the light's sampling, computed here independently: 1 / area for the disk
