@@ -45,9 +45,15 @@ final class SphericalRectangle {
         double xz = x * x + z2;
         double l0 = Math.sqrt(xz + y0 * y0);
         double l1 = Math.sqrt(xz + y1 * y1);
-        // y0 l1 - y1 l0, whose terms cancel for y0, y1 of one sign: then (y0^2 - y1^2)(x^2 + z0^2) / (y0 l1 + y1 l0)
-        double t = y0 * y1 > 0 ? (y0 - y1) * (y0 + y1) * xz / (y0 * l1 + y1 * l0) : y0 * l1 - y1 * l0;
-        return Math.atan2(-z0 * x * t, z2 * l0 * l1 + x * x * y0 * y1);
+        double sine = -z0 * x;
+        double cosine = z2 * l0 * l1 + x * x * y0 * y1;
+        if (y0 * y1 > 0) {
+            // y0 l1 - y1 l0 cancels for y0, y1 of one sign: it is (y0^2 - y1^2)(x^2 + z0^2) / (y0 l1 + y1 l0),
+            // and atan2 takes both arguments times |y0 l1 + y1 l0| as well
+            double m = y0 * l1 + y1 * l0;
+            return Math.atan2(sine * (y0 - y1) * (y0 + y1) * xz * Math.signum(m), cosine * Math.abs(m));
+        }
+        return Math.atan2(sine * (y0 * l1 - y1 * l0), cosine);
     }
 
     /** The solid angle of the rectangle, K(x0) - K(x1) ({@link #edgeAngle}); 0 unless z0 &lt; 0. */
@@ -68,29 +74,29 @@ final class SphericalRectangle {
         double z2 = z0 * z0;
         double ly0 = Math.sqrt(y0 * y0 + z2);
         double ly1 = Math.sqrt(y1 * y1 + z2);
-        // the paper's a_u = u S - g2 - g3 is phi - pi, phi = u S - k: cos(a_u) = -cos(phi), sin(a_u) = -sin(phi)
+        // the paper's a_u = u S - g2 - g3 is phi - pi, phi = u S - k; its b0 = -y0 / ly0, b1 = y1 / ly1
+        // and f_u = (cos(a_u) b0 - b1) / sin(a_u) = a / sin(phi) with a = b0 cos(phi) + b1. From the
+        // half angle, sin(phi) = 2 s c, 1 - cos(phi) = 2 s^2, 1 + cos(phi) = 2 c^2, without division
         double phi = u * solidAngle - k;
-        double b0 = -y0 / ly0;
-        double b1 = y1 / ly1;
-        // the paper's f_u = (cos(a_u) b0 - b1) / sin(a_u) is a / b with a = b0 cos(phi) + b1, taken
-        // in parts that do not cancel: (b0 + b1) - b0 (1 - cos(phi)) for cos(phi) >= 0, else
-        // (b1 - b0) + b0 (1 + cos(phi)), with 1 -+ cos(phi) = sin^2(phi) / (1 +- cos(phi)); and
-        // b1 -+ b0 = y1 / ly1 +- y0 / ly0, whose terms cancel for y0, y1 of one sign (-) or of
-        // opposite signs (+), is then z0^2 (y1^2 - y0^2) / (ly0 ly1 (y1 ly0 -+ y0 ly1))
-        double b = Math.sin(phi);
-        double cos = Math.cos(phi);
-        double a;
-        if (cos >= 0) {
-            double sum = y0 * y1 > 0 ? z2 * (y1 - y0) * (y1 + y0) / (ly0 * ly1 * (y1 * ly0 + y0 * ly1)) : b0 + b1;
-            a = sum - b0 * (b * b / (1 + cos));
+        double s = Math.sin(0.5 * phi);
+        double c = Math.cos(0.5 * phi);
+        double sinPhi = 2 * s * c;
+        // A = ly0 ly1 a = y1 ly0 - y0 ly1 cos(phi) in parts that do not cancel: (y1 ly0 - y0 ly1)
+        // + y0 ly1 (1 - cos(phi)) where cos(phi) >= 0, else (y1 ly0 + y0 ly1) - y0 ly1 (1 + cos(phi));
+        // y1 ly0 -+ y0 ly1, whose terms cancel for y0, y1 of one sign (-) or of opposite signs (+),
+        // is then z0^2 (y1^2 - y0^2) / (y1 ly0 +- y0 ly1)
+        double big;
+        if (c * c >= s * s) {
+            double difference = y0 * y1 > 0 ? z2 * (y1 - y0) * (y1 + y0) / (y1 * ly0 + y0 * ly1) : y1 * ly0 - y0 * ly1;
+            big = difference + 2 * y0 * ly1 * s * s;
         } else {
-            double difference = y0 * y1 < 0 ? z2 * (y1 - y0) * (y1 + y0) / (ly0 * ly1 * (y1 * ly0 - y0 * ly1)) : b1 - b0;
-            a = difference + b0 * (b * b / (1 - cos));
+            double sum = y0 * y1 < 0 ? z2 * (y1 - y0) * (y1 + y0) / (y1 * ly0 - y0 * ly1) : y1 * ly0 + y0 * ly1;
+            big = sum - 2 * y0 * ly1 * c * c;
         }
-        // c_u = sign(f_u) / sqrt(f_u^2 + b0^2) and x_u = -c_u z0 / sqrt(1 - c_u^2) become, without
-        // dividing by sin(phi) and with 1 - b0^2 = (z0 / ly0)^2, x_u = -z0 sign(a) b / sqrt(a^2 - (z0 / ly0)^2 b^2)
-        double q = z0 / ly0;
-        double xu = -z0 * (a >= 0 ? b : -b) / Math.sqrt(a * a - q * q * b * b);
+        // c_u = sign(f_u) / sqrt(f_u^2 + b0^2) and x_u = -c_u z0 / sqrt(1 - c_u^2) become, with
+        // 1 - b0^2 = (z0 / ly0)^2, x_u = -z0 sign(A) sin(phi) ly0 ly1 / sqrt(A^2 - (z0 ly1 sin(phi))^2)
+        double zb = z0 * ly1 * sinPhi;
+        double xu = -z0 * (big >= 0 ? sinPhi : -sinPhi) * ly0 * ly1 / Math.sqrt(big * big - zb * zb);
         if (!(xu >= x0)) { // also NaN, from a vanishing denominator at the edge
             xu = x0;
         } else if (xu > x1) {
@@ -101,20 +107,21 @@ final class SphericalRectangle {
         double d2 = xu * xu + z2;
         double l0 = Math.sqrt(d2 + y0 * y0);
         double l1 = Math.sqrt(d2 + y1 * y1);
-        double m0 = d2 / (l0 * (l0 + Math.abs(y0)));
-        double m1 = d2 / (l1 * (l1 + Math.abs(y1)));
         double m;
         boolean above;
         if (y0 >= 0) { // 1 - h falls from m0 to m1
-            m = m0 - v * (m0 - m1);
+            double m0 = d2 / (l0 * (l0 + y0));
+            m = m0 - v * (m0 - d2 / (l1 * (l1 + y1)));
             above = true;
         } else if (y1 <= 0) { // 1 + h rises from m0 to m1
-            m = m0 + v * (m1 - m0);
+            double m0 = d2 / (l0 * (l0 - y0));
+            m = m0 + v * (d2 / (l1 * (l1 - y1)) - m0);
             above = false;
         } else { // h0 < 0 < h1: h1 - h0 does not cancel; m from the nearer end
-            double span = y1 / l1 - y0 / l0;
-            above = y0 / l0 + v * span >= 0;
-            m = above ? m1 + (1 - v) * span : m0 + v * span;
+            double h0 = y0 / l0;
+            double span = y1 / l1 - h0;
+            above = h0 + v * span >= 0;
+            m = above ? d2 / (l1 * (l1 + y1)) + (1 - v) * span : d2 / (l0 * (l0 - y0)) + v * span;
         }
         double yv = (1 - m) * Math.sqrt(d2 / (m * (2 - m)));
         if (!above) {

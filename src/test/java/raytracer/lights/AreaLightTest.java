@@ -151,17 +151,21 @@ class AreaLightTest {
      * The book's estimator without a render: the mean over a fine stratified grid of samples of
      * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
      * the density of the light's sampling, computed here independently: 1 / area for the disk
-     * (area pi R^2), G / Omega for the rectangle and the sphere, sampled uniformly over the solid
-     * angle Omega they cover: 4 asin(a b / sqrt((a^2 + h^2)(b^2 + h^2))) for a 2a x 2b rectangle
-     * centred h above the point, 2 pi (1 - sqrt(1 - (R / D)^2)) for a sphere D away.
+     * (area pi R^2) and for the 2 x 1 rectangle 2 above (its farthest corner is 1.31 times as far
+     * as its nearest point in d^2, too little for solid-angle sampling to pay); G / Omega for the
+     * sphere, sampled uniformly over the solid angle Omega = 2 pi (1 - sqrt(1 - (R / D)^2)) it
+     * covers D away, and for the same rectangle 0.25 above (21 times in d^2), over its
+     * Omega = 4 asin(a b / sqrt((a^2 + h^2)(b^2 + h^2))), a 2a x 2b rectangle centred h above.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"disk", "sphere", "rectangle"})
+    @ValueSource(strings = {"disk", "sphere", "rectangle", "near rectangle"})
     void gOverPdfAveragesToTheAnalyticIrradiance(String kind) {
-        AreaLight light = kind.equals("disk") ? disk(1) : kind.equals("sphere") ? sphere(1) : rectangle(1);
-        double expected = kind.equals("disk") ? DISK_EXPECTED : kind.equals("sphere") ? SPHERE_EXPECTED : RECTANGLE_EXPECTED;
+        double h = kind.equals("near rectangle") ? 0.25 : 2;
+        AreaLight light = kind.equals("disk") ? disk(1) : kind.equals("sphere") ? sphere(1)
+            : AreaLight.rectangle(new Point3D(-1, h, -0.5), new Vector3D(2, 0, 0), new Vector3D(0, 0, 1), 3, RGBColor.WHITE, 1);
+        double expected = kind.equals("disk") ? DISK_EXPECTED : kind.equals("sphere") ? SPHERE_EXPECTED : rectangleExpected(3, 1, 0.5, h);
         double solidAngle = kind.equals("sphere") ? 2 * Math.PI * (1 - Math.sqrt(1 - 0.5 * 0.5 / (3.0 * 3)))
-            : 4 * Math.asin(1 * 0.5 / Math.sqrt((1 + 2 * 2) * (0.5 * 0.5 + 2 * 2)));
+            : 4 * Math.asin(1 * 0.5 / Math.sqrt((1 + h * h) * (0.5 * 0.5 + h * h)));
         World world = new World(new ViewPlane(1, 1, 1, new MultiJittered(), 0, 1),
             new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
@@ -174,7 +178,7 @@ class AreaLightTest {
         for (int i = 0; i < grid; i++) {
             for (int j = 0; j < grid; j++) {
                 light.sample(sr, (i + 0.5) / grid, (j + 0.5) / grid, wi);
-                double pdf = kind.equals("disk") ? 1 / Math.PI : light.G(sr) / solidAngle;
+                double pdf = kind.equals("disk") ? 1 / Math.PI : kind.equals("rectangle") ? 1 / 2.0 : light.G(sr) / solidAngle;
                 assertEquals(pdf, light.pdf(sr), 1e-12 * pdf, kind + ": the sampling's density");
                 light.L(sr, le);
                 double cos = Math.max(0, sr.normal.dot(wi));

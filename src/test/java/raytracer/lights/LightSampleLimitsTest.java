@@ -73,22 +73,37 @@ class LightSampleLimitsTest {
     }
 
     /**
-     * Above the threshold a rectangle is sampled by solid angle, G / pdf being that solid angle;
-     * below it by area, pdf being 1 / area: a 1 x 1 light 600 and 2000 away (2.8e-6 and 2.5e-7 sr).
+     * Where a rectangle is near or large it is sampled by solid angle, G / pdf being that solid
+     * angle, unless the solid angle is below what the map resolves; then, as where it is small and
+     * far, by area, pdf being 1 / area. A 1 x 1 light seen edge-on from 1e-5 and 1e-7 below its
+     * plane, 1 to 2 away (1.2e-5 and 1.2e-7 sr; its farthest corner is 2 times as far as its
+     * nearest point), and from 600 away (2.8e-6 sr, but nearly as far everywhere).
      */
     @Test
-    void aRectangleBelowTheThresholdIsSampledByArea() {
-        AreaLight near = AreaLight.rectangle(new Point3D(-0.5, 600, -0.5), new Vector3D(1, 0, 0), new Vector3D(0, 0, 1), 1, RGBColor.WHITE, 1);
-        double solidAngle = 4 * Math.asin(0.25 / (0.25 + 600 * 600));
-        assertTrue(solidAngle > SphericalRectangle.MIN_SOLID_ANGLE);
-        assertEquals(solidAngle, check("near", near, 0, 0, 0), 1e-9 * solidAngle);
-        AreaLight far = AreaLight.rectangle(new Point3D(-0.5, 2000, -0.5), new Vector3D(1, 0, 0), new Vector3D(0, 0, 1), 1, RGBColor.WHITE, 1);
-        assertTrue(4 * Math.asin(0.25 / (0.25 + 2000 * 2000)) < SphericalRectangle.MIN_SOLID_ANGLE);
+    void tinySolidAnglesAreSampledByArea() {
+        AreaLight light = AreaLight.rectangle(new Point3D(1, 0, -0.5), new Vector3D(1, 0, 0), new Vector3D(0, 0, 1), 1, RGBColor.WHITE, 1);
+        // seen from (0, -h, 0), the solid angle is h times the integral of 1 / (x^2 + z^2)^(3/2) over it, to first order in h
+        double perHeight = 0;
+        int n = 2000;
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n; j++) {
+                double x = 1 + (i + 0.5) / n;
+                double z = -0.5 + (j + 0.5) / n;
+                perHeight += Math.pow(x * x + z * z, -1.5) / ((double) n * n);
+            }
+        }
+        double grazing = 1e-5 * perHeight;
+        assertTrue(grazing > SphericalRectangle.MIN_SOLID_ANGLE && 1e-2 * grazing < SphericalRectangle.MIN_SOLID_ANGLE);
+        assertEquals(grazing, check("edge-on, 1e-5 below", light, 0, -1e-5, 0), 1e-6 * grazing);
         ShadeRec sr = shadeRec();
+        sr.hitPoint.set(0, -1e-7, 0);
+        light.sample(sr, 0.3, 0.6, new MutableVec3());
+        assertEquals(1, light.pdf(sr), "edge-on, 1e-7 below: 1 / area");
+        assertEquals(1.3, sr.lightPoint.x, 1e-12, "the corner plus u a plus v b");
+        AreaLight far = AreaLight.rectangle(new Point3D(-0.5, 600, -0.5), new Vector3D(1, 0, 0), new Vector3D(0, 0, 1), 1, RGBColor.WHITE, 1);
         sr.hitPoint.set(0, 0, 0);
         far.sample(sr, 0.3, 0.6, new MutableVec3());
-        assertEquals(1, far.pdf(sr), "1 / area");
-        assertEquals(-0.5 + 0.3, sr.lightPoint.x, 1e-12, "the corner plus u a plus v b");
+        assertEquals(1, far.pdf(sr), "600 away: 1 / area");
     }
 
     @Test
