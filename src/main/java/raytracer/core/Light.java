@@ -59,12 +59,10 @@ public abstract class Light {
     }
 
     /**
-     * The density, over solid angle at the point ({@code fromX}, {@code fromY}, {@code fromZ}),
-     * with which this light's sampling from that point picks the direction to a point of its
-     * surface {@code distance} away, seen at {@code cosLight} from the surface's normal: the
-     * area density {@link #pdf} times d^2 / cos(theta_light) (Suffern, chapter 18). It depends on
-     * the point when the light samples by solid angle. 0 for lights without extent, whose one
-     * direction no traced ray can find.
+     * The density, over solid angle at the point (fromX, fromY, fromZ), with which this light's
+     * sampling from there picks the direction to a point of its surface {@code distance} away, seen
+     * at {@code cosLight} from its normal: {@link #pdf} d^2 / cos(theta_light) (Suffern, chapter 18).
+     * 0 for lights without extent, whose one direction no traced ray can find.
      */
     public double directionPdf(double fromX, double fromY, double fromZ, double distance, double cosLight) {
         return 0;
@@ -98,10 +96,9 @@ public abstract class Light {
     }
 
     /**
-     * The density of the last sample over the light's area (Suffern, chapter 18: 1 / area for
-     * uniform sampling; a light that samples by solid angle gives pdf_omega cos(theta_light) / d^2,
-     * so that G / pdf is 1 / pdf_omega); 1 for lights without extent. The estimate of a light's
-     * contribution is then the book's L f G cos(theta_i) / pdf. Positive whenever {@link #G} is.
+     * The density of the last sample over the light's area (Suffern, chapter 18: 1 / area for uniform
+     * sampling; pdf_omega cos(theta_light) / d^2 for sampling by solid angle); 1 for lights without
+     * extent. The estimate of a light's contribution is then the book's L f G cos(theta_i) / pdf.
      */
     public double pdf(ShadeRec sr) {
         return 1;

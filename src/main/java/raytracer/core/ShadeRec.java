@@ -64,11 +64,6 @@ public final class ShadeRec {
     /** The point and unit normal of the last area-light sample. */
     public final MutableVec3 lightPoint = new MutableVec3();
     public final MutableVec3 lightNormal = new MutableVec3();
-    /**
-     * The density, over the light's area, with which its sampling picked that point (a light that
-     * samples by solid angle gives it as pdf_omega cos(theta_light) / d^2), for {@link Light#pdf}.
-     */
-    public double lightPdf;
 
     public ShadeRec(World world, WorkerScratch scratch) {
         this.world = world;
@@ -202,4 +197,10 @@ public final class ShadeRec {
         }
         return value;
     }
+
+    /**
+     * The density, over the light's area, with which its sampling picked {@link #lightPoint} (a
+     * light that samples by solid angle gives pdf_omega cos(theta_light) / d^2), for {@link Light#pdf}.
+     */
+    public double lightPdf;
 }
