@@ -59,12 +59,12 @@ public abstract class Light {
     }
 
     /**
-     * The density, over solid angle at the shaded point, with which this light's sampling picks
-     * the direction to a point of its surface {@code distance} away, seen at {@code cosLight} from
-     * the surface's normal: pdf d^2 / cos(theta_light) (Suffern, chapter 18). 0 for lights without
-     * extent, whose one direction no traced ray can find.
+     * The density, over solid angle at the point (fromX, fromY, fromZ), with which this light's
+     * sampling from there picks the direction to a point of its surface {@code distance} away, seen
+     * at {@code cosLight} from its normal: {@link #pdf} d^2 / cos(theta_light) (Suffern, chapter 18).
+     * 0 for lights without extent, whose one direction no traced ray can find.
      */
-    public double directionPdf(double distance, double cosLight) {
+    public double directionPdf(double fromX, double fromY, double fromZ, double distance, double cosLight) {
         return 0;
     }
 
@@ -96,9 +96,9 @@ public abstract class Light {
     }
 
     /**
-     * The density of the last sample over the light's area (Suffern, chapter 18: 1 / area for
-     * uniform sampling); 1 for lights without extent. The estimate of a light's contribution is
-     * then the book's L f G cos(theta_i) / pdf.
+     * The density of the last sample over the light's area (Suffern, chapter 18: 1 / area for uniform
+     * sampling; pdf_omega cos(theta_light) / d^2 for sampling by solid angle); 1 for lights without
+     * extent. The estimate of a light's contribution is then the book's L f G cos(theta_i) / pdf.
      */
     public double pdf(ShadeRec sr) {
         return 1;

@@ -197,4 +197,10 @@ public final class ShadeRec {
         }
         return value;
     }
+
+    /**
+     * The density, over the light's area, with which its sampling picked {@link #lightPoint} (a
+     * light that samples by solid angle gives pdf_omega cos(theta_light) / d^2), for {@link Light#pdf}.
+     */
+    public double lightPdf;
 }

@@ -10,17 +10,20 @@ import raytracer.math.MutableVec3;
 
 /**
  * An area light (Suffern, chapter 18): radiance Le leaves one side of a surface. Each shaded point
- * takes {@code samples} points of the surface, uniformly by area ({@link #pdf} = 1 / area), and
- * the AreaLighting tracer's areaLightShade weighs each by Le f G cos(theta_i) / pdf with
- * {@link #G} = cos(theta_light) / d^2: the average is an unbiased estimate of the integral of
+ * takes {@code samples} points of the surface, and the AreaLighting tracer's areaLightShade weighs
+ * each by Le f G cos(theta_i) / pdf with {@link #G} = cos(theta_light) / d^2 and {@link #pdf} the
+ * sample's density over the light's area: the average is an unbiased estimate of the integral of
  * Le f cos(theta_i) over the solid angle the light covers. Soft shadows follow from the shadow ray
- * of each sample.
+ * of each sample. The book samples uniformly by area (pdf = 1 / area); here a rectangle and a
+ * sphere are sampled uniformly over the solid angle they cover at the shaded point
+ * ({@link RectangleEmitter}, {@link SphereEmitter}), so that G / pdf is that solid angle and only
+ * the cosine at the shaded point, the BRDF and the shadows vary between samples; a disk, as in
+ * pbrt, by area.
  */
 public final class AreaLight extends Light {
     private final Emitter emitter;
     private final RGBColor radiance;
     private final int samples;
-    private final double inverseArea;
 
     AreaLight(Emitter emitter, double ls, RGBColor color, int samples) {
         if (samples < 1 || samples > Sampler.MAX_SAMPLES) {
@@ -29,7 +32,6 @@ public final class AreaLight extends Light {
         this.emitter = emitter;
         this.radiance = color.scale(ls);
         this.samples = samples;
-        this.inverseArea = 1 / emitter.area();
     }
 
     public static AreaLight rectangle(raytracer.math.Point3D corner, raytracer.math.Vector3D a, raytracer.math.Vector3D b,
@@ -51,10 +53,17 @@ public final class AreaLight extends Light {
         return true;
     }
 
-    /** Uniform by area: (1 / area) d^2 / cos(theta_light). */
+    /**
+     * The emitter's area density times d^2 / cos(theta_light); where cos(theta_light) is 0 (a ray
+     * along the light's plane, which cannot find it) infinite, so that a MIS weight leaves such a
+     * direction to the other technique.
+     */
     @Override
-    public double directionPdf(double distance, double cosLight) {
-        return inverseArea * distance * distance / cosLight;
+    public double directionPdf(double fromX, double fromY, double fromZ, double distance, double cosLight) {
+        if (!(cosLight > 0)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        return emitter.pdf(fromX, fromY, fromZ, distance, cosLight) * distance * distance / cosLight;
     }
 
     /** Le = ls c. */
@@ -80,10 +89,13 @@ public final class AreaLight extends Light {
         return samples;
     }
 
-    /** Samples the emitter: the point and its normal are kept in {@code sr} for {@link #G}. */
+    /**
+     * Samples the emitter as seen from the hit: the point, its normal and its area density are
+     * kept in {@code sr} for {@link #G} and {@link #pdf}.
+     */
     @Override
     public double sample(ShadeRec sr, double u, double v, MutableVec3 wi) {
-        emitter.sample(u, v, sr.lightPoint, sr.lightNormal);
+        sr.lightPdf = emitter.sample(sr.hitPoint, u, v, sr.lightPoint, sr.lightNormal);
         wi.set(sr.lightPoint.x - sr.hitPoint.x, sr.lightPoint.y - sr.hitPoint.y, sr.lightPoint.z - sr.hitPoint.z);
         double distance = wi.length();
         wi.set(wi.x / distance, wi.y / distance, wi.z / distance);
@@ -104,12 +116,7 @@ public final class AreaLight extends Light {
     /** cos(theta_light) / d^2 for the last sample; 0 when it faces away from the hit. */
     @Override
     public double G(ShadeRec sr) {
-        double dx = sr.lightPoint.x - sr.hitPoint.x;
-        double dy = sr.lightPoint.y - sr.hitPoint.y;
-        double dz = sr.lightPoint.z - sr.hitPoint.z;
-        double d2 = dx * dx + dy * dy + dz * dz;
-        double cosLight = -(sr.lightNormal.x * dx + sr.lightNormal.y * dy + sr.lightNormal.z * dz) / Math.sqrt(d2);
-        return cosLight > 0 ? cosLight / d2 : 0;
+        return Emitter.geometricFactor(sr.hitPoint, sr.lightPoint, sr.lightNormal);
     }
 
     /**
@@ -126,10 +133,10 @@ public final class AreaLight extends Light {
         return sr.world.shadowHit(sr.spawnRayTo(q.x, q.y, q.z, sr.scratch.shadowRay), 1, sr);
     }
 
-    /** 1 / area: every sample is drawn uniformly over the emitter's surface. */
+    /** The last sample's density over the emitter's area, as its sampling gave it. */
     @Override
     public double pdf(ShadeRec sr) {
-        return inverseArea;
+        return sr.lightPdf;
     }
 
     @Override

@@ -7,13 +7,17 @@ import raytracer.math.SampleMapping;
 import raytracer.math.MutableVec3;
 import raytracer.math.Vector3D;
 
-/** A disk emitting on the side its normal points to; sampled through the concentric map. */
+/**
+ * A disk emitting on the side its normal points to; sampled uniformly by area through the
+ * concentric map, as pbrt-v4's Disk::Sample does from a reference point too.
+ */
 final class DiskEmitter implements Emitter {
     private final Point3D center;
     private final Vector3D normal;
     private final Vector3D e1;
     private final Vector3D e2;
     private final double radius;
+    private final double inverseArea;
 
     DiskEmitter(Point3D center, Vector3D normal, double radius) {
         if (!(radius > 0) || !(normal.length() > 0)) {
@@ -25,6 +29,7 @@ final class DiskEmitter implements Emitter {
         this.e1 = helper.cross(this.normal).normalize();
         this.e2 = this.normal.cross(e1);
         this.radius = radius;
+        this.inverseArea = 1 / area();
     }
 
     /**
@@ -40,8 +45,9 @@ final class DiskEmitter implements Emitter {
         point.set(point.x + move * n.x, point.y + move * n.y, point.z + move * n.z);
     }
 
+    /** Uniform by area, whatever the point: density 1 / area. */
     @Override
-    public void sample(double u, double v, MutableVec3 point, MutableVec3 n) {
+    public double sample(MutableVec3 p, double u, double v, MutableVec3 point, MutableVec3 n) {
         // the point's disk coordinates go through n first, which is overwritten right after
         SampleMapping.toUnitDisk(u, v, n);
         double x = n.x * radius;
@@ -49,6 +55,12 @@ final class DiskEmitter implements Emitter {
         point.set(center.x() + x * e1.x() + y * e2.x(), center.y() + x * e1.y() + y * e2.y(),
                   center.z() + x * e1.z() + y * e2.z());
         n.set(normal.x(), normal.y(), normal.z());
+        return inverseArea;
+    }
+
+    @Override
+    public double pdf(double px, double py, double pz, double distance, double cosLight) {
+        return inverseArea;
     }
 
     @Override

@@ -50,7 +50,7 @@ public final class Emissive extends Material {
             Ray ray = sr.ray;
             double d2 = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
             double cos = Math.abs(sr.geometricNormal.dot(ray.dx, ray.dy, ray.dz)) / Math.sqrt(d2);
-            sr.scratch.recordEmitter(sr.depth, light, light.directionPdf(sr.t * Math.sqrt(d2), cos));
+            sr.scratch.recordEmitter(sr.depth, light, light.directionPdf(ray.ox, ray.oy, ray.oz, sr.t * Math.sqrt(d2), cos));
         }
     }
 

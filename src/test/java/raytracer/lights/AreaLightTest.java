@@ -131,16 +131,41 @@ class AreaLightTest {
     }
 
     /**
-     * The book's estimator without a render: the mean over a fine stratified grid of samples of
-     * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
-     * 1 / area, the area computed here independently (2 x 1 rectangle, pi R^2, 4 pi R^2).
+     * Close up, where sampling by solid angle differs most from sampling by area: a sphere of
+     * radius 1 whose lowest point is 0.1 above the floor (E = pi Le (R / d)^2 still, the sphere
+     * being wholly above the horizon) and the 2 x 1 rectangle 0.25 above it, one sample each.
      */
     @ParameterizedTest
-    @ValueSource(strings = {"disk", "sphere", "rectangle"})
+    @ValueSource(strings = {"sphere", "rectangle"})
+    void closeLightsMatchTheAnalyticIrradiance(String kind) {
+        boolean sphere = kind.equals("sphere");
+        AreaLight light = sphere ? AreaLight.sphere(new Point3D(0, 1.1, 0), 1, 2, RGBColor.WHITE, 1)
+            : AreaLight.rectangle(new Point3D(-1, 0.25, -0.5), new Vector3D(2, 0, 0), new Vector3D(0, 0, 1), 3, RGBColor.WHITE, 1);
+        double expected = sphere ? 2 / (1.1 * 1.1) : rectangleExpected(3, 1, 0.5, 0.25);
+        double[] e = estimate(light);
+        assertEquals(expected, e[0], 4 * e[1] + 1e-6, kind + ": mean " + e[0] + " +- " + e[1]);
+        assertTrue(e[1] < 0.02 * expected, "the estimate should be reasonably precise: " + e[1]);
+    }
+
+    /**
+     * The book's estimator without a render: the mean over a fine stratified grid of samples of
+     * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
+     * the density of the light's sampling, computed here independently: 1 / area for the disk
+     * (area pi R^2) and for the 2 x 1 rectangle 2 above (its farthest corner is 1.31 times as far
+     * as its nearest point in d^2, too little for solid-angle sampling to pay); G / Omega for the
+     * sphere, sampled uniformly over the solid angle Omega = 2 pi (1 - sqrt(1 - (R / D)^2)) it
+     * covers D away, and for the same rectangle 0.25 above (21 times in d^2), over its
+     * Omega = 4 asin(a b / sqrt((a^2 + h^2)(b^2 + h^2))), a 2a x 2b rectangle centred h above.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"disk", "sphere", "rectangle", "near rectangle"})
     void gOverPdfAveragesToTheAnalyticIrradiance(String kind) {
-        AreaLight light = kind.equals("disk") ? disk(1) : kind.equals("sphere") ? sphere(1) : rectangle(1);
-        double expected = kind.equals("disk") ? DISK_EXPECTED : kind.equals("sphere") ? SPHERE_EXPECTED : RECTANGLE_EXPECTED;
-        double emitterArea = kind.equals("disk") ? Math.PI : kind.equals("sphere") ? 4 * Math.PI * 0.5 * 0.5 : 2 * 1;
+        double h = kind.equals("near rectangle") ? 0.25 : 2;
+        AreaLight light = kind.equals("disk") ? disk(1) : kind.equals("sphere") ? sphere(1)
+            : AreaLight.rectangle(new Point3D(-1, h, -0.5), new Vector3D(2, 0, 0), new Vector3D(0, 0, 1), 3, RGBColor.WHITE, 1);
+        double expected = kind.equals("disk") ? DISK_EXPECTED : kind.equals("sphere") ? SPHERE_EXPECTED : rectangleExpected(3, 1, 0.5, h);
+        double solidAngle = kind.equals("sphere") ? 2 * Math.PI * (1 - Math.sqrt(1 - 0.5 * 0.5 / (3.0 * 3)))
+            : 4 * Math.asin(1 * 0.5 / Math.sqrt((1 + h * h) * (0.5 * 0.5 + h * h)));
         World world = new World(new ViewPlane(1, 1, 1, new MultiJittered(), 0, 1),
             new Orthographic(new Point3D(0, 5, 0), Point3D.ORIGIN, new Vector3D(0, 0, -1), 1), new Ambient(0, RGBColor.WHITE));
         ShadeRec sr = new WorkerScratch(world).shadeRec(0);
@@ -153,7 +178,8 @@ class AreaLightTest {
         for (int i = 0; i < grid; i++) {
             for (int j = 0; j < grid; j++) {
                 light.sample(sr, (i + 0.5) / grid, (j + 0.5) / grid, wi);
-                assertEquals(1 / emitterArea, light.pdf(sr), 1e-12 / emitterArea, "uniform by area");
+                double pdf = kind.equals("disk") ? 1 / Math.PI : kind.equals("rectangle") ? 1 / 2.0 : light.G(sr) / solidAngle;
+                assertEquals(pdf, light.pdf(sr), 1e-12 * pdf, kind + ": the sampling's density");
                 light.L(sr, le);
                 double cos = Math.max(0, sr.normal.dot(wi));
                 sum += le.r * light.G(sr) * cos / light.pdf(sr);
@@ -219,7 +245,7 @@ class AreaLightTest {
                 boolean may = e.mayLight(p, n);
                 boolean lit = false;
                 for (int s = 0; s < 400 && !lit; s++) {
-                    e.sample((s % 20 + 0.5) / 20, (s / 20 + 0.5) / 20, q, qn);
+                    e.sample(p, (s % 20 + 0.5) / 20, (s / 20 + 0.5) / 20, q, qn);
                     double dx = q.x - p.x;
                     double dy = q.y - p.y;
                     double dz = q.z - p.z;

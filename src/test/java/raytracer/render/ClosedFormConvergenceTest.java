@@ -18,12 +18,13 @@ import raytracer.samplers.Samplers;
  * The renderer converges to the exact images of the closed-form scenes in scenes/ (at 32 x 32;
  * docs/converge.md quotes these figures and bounds). With samples stratified across the pixel the
  * error falls about as 1/spp here, where the integrand is smooth: from 4 to 64 spp the RMSE falls
- * 15.49x (rectangle) and 13.85x (disk) at seed 1, 13.3-15.5x and 12.4-15.0x over seeds 1 to 10;
- * the test asks for more than 10, where independent samples (the sampler `random`) give 4.04 and
- * 4.25. At 1024 spp what is left is noise, not bias: the squared error against the exact image
- * over the noise variance measured between seeds 1 and 2 is 1.039 (rectangle) and 1.029 (disk),
- * 0.78-1.29 and 0.90-1.43 over ten seed pairs; the test asks for 1 within 0.5. The mean error is
- * 0.25 and 0.94 standard errors from 0; the test asks for 4. Measured earlier with independent
+ * 18.39x (rectangle, sampled by solid angle) and 13.85x (disk) at seed 1 (15.49x for the
+ * rectangle sampled by area; 13.3-15.5x and 12.4-15.0x over seeds 1 to 10 then); the test asks
+ * for more than 10, where independent samples (the sampler `random`) gave 4.04 and 4.25. At 1024
+ * spp what is left is noise, not bias: the squared error against the exact image over the noise
+ * variance measured between seeds 1 and 2 is 1.002 (rectangle) and 1.029 (disk) (1.039 for the
+ * rectangle by area, and 0.78-1.29 and 0.90-1.43 over ten seed pairs then); the test asks for 1
+ * within 0.5. The mean error is 0.35 and 0.94 standard errors from 0; the test asks for 4. Measured earlier with independent
  * light samples, rendering against deliberately wrong references: half a pixel off made the ratio
  * 14 to 20, a flipped image 2000 to 4600; taking each pixel's centre value instead of its average
  * is too small a change to see here (0.88 against 0.86).
@@ -79,8 +80,9 @@ class ClosedFormConvergenceTest {
      * pattern over the light: the error at 16 spp is well below what 16 independent samples give.
      * That is computed from the variance of one sample, measured per pixel over 8 renders at 1 spp
      * (a single sample is uniform over the light whatever the sampler): sqrt(mean variance / 16).
-     * Measured: the 16-spp RMSE is 1/6.94 of it with multi-jittered patterns, 1/7.74 with Sobol'
-     * ones; the test asks for less than 1/4.
+     * Measured, with the rectangle sampled by solid angle: the 16-spp RMSE is 1/8.78 of it with
+     * multi-jittered patterns, 1/9.09 with Sobol' ones (1/6.94 and 1/7.74 sampled by area); the
+     * test asks for less than 1/4.
      */
     @ParameterizedTest
     @ValueSource(strings = {"multi-jittered", "sobol"})
