@@ -146,8 +146,11 @@ final class MaterialReader {
 
     static Material glossy(Parameters m) throws ParameterException {
         Lit l = lit(m);
+        // normalised by default: each glossy ray then weighs about ks cs, as in Suffern's estimator,
+        // so the blurred reflection has a mirror's strength; the report's unnormalised lobe would
+        // reflect 2 pi / (e + 1) of that (2% at exponent 200), and figure 1b sets it explicitly
         return new GlossyReflector(l.ka, l.kd, l.cd, l.ks, l.cs, l.exp, m.integer("samples", GLOSSY_SAMPLES, 1, Sampler.MAX_SAMPLES),
-                                   m.bool("normalized", false));
+                                   m.bool("normalized", true));
     }
 
     static Material reflective(Parameters m) throws ParameterException {
