@@ -11,7 +11,7 @@ closest to our default multi-jittered), independent or stratified.
 
     mitsuba-arealight.py --spp 64 [--variant llvm_ad_rgb] [--sampler multijitter] [--seed 1]
                          [--repeat 3] [--reference REF.exr] [-o out.exr]
-    mitsuba-arealight.py --make-reference REF.exr [--reference-spp 4096] [--chunk 64]
+    mitsuba-arealight.py --make-reference REF.exr [--variant scalar_rgb] [--reference-spp 4232] [--chunk 2116]
 
 The first form renders once untimed at --spp (the llvm variants compile their kernel then, or
 take it from Dr.Jit's kernel cache), then --repeat timed renders with seeds --seed, --seed + 1, ...
@@ -23,6 +23,9 @@ linear radiance, as `render converge` computes it. Prints one line per render:
 The second form renders the reference: --reference-spp samples per pixel in chunks of --chunk
 (seeds 100000 + k, none of which a measured render uses), the two halves averaged; half the
 relative RMSE between the halves is the reference's own noise (printed, and kept in REF.json).
+By default two chunks of 2116 spp, as converge's own reference (2 x 2116): each chunk is one
+stratified pattern, where many small chunks would only average as 1/sqrt(chunks). Render it with
+scalar_rgb: an llvm variant holds a chunk's every sample in one wavefront, too many for memory.
 """
 import argparse
 import json
@@ -110,8 +113,8 @@ def main():
     ap.add_argument("--plane-size", type=float, default=1000.0)
     ap.add_argument("--reference", help="EXR to measure the error against")
     ap.add_argument("--make-reference", metavar="REF.exr")
-    ap.add_argument("--reference-spp", type=int, default=4096)
-    ap.add_argument("--chunk", type=int, default=64)
+    ap.add_argument("--reference-spp", type=int, default=4232)
+    ap.add_argument("--chunk", type=int, default=2116)
     ap.add_argument("-o", "--output", help="write the last render as EXR (linear) or PNG (sRGB)")
     a = ap.parse_args()
 

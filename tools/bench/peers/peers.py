@@ -239,8 +239,9 @@ def spread(values):
 
 
 def loglog_time_at(points, target):
-    """The time at which the error falls to target on the log-log line through the two measured
-    points (seconds, error) that bracket it (or the two nearest ends, extrapolated, flagged)."""
+    """The x (seconds, or samples per pixel) at which the error falls to target on the log-log line
+    through the two measured points (x, error) that bracket it (or through the two nearest ends,
+    extrapolated: then the second value is True)."""
     pts = sorted(points)
     for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
         if (e0 - target) * (e1 - target) <= 0 and e0 != e1:
