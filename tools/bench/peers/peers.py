@@ -211,24 +211,25 @@ def cpu_lock():
 
 def timed(cmd, env=None, cwd=REPO, lock=True):
     """Runs cmd to completion under the CPU lock (the wait for the lock is not timed): its wall time
-    from fork to exit (as /usr/bin/time's elapsed), its peak RSS in MiB, its output. Exits with the
-    output's tail if it fails."""
+    from fork to exit (of /usr/bin/time running it: its elapsed, at a finer resolution), its peak RSS
+    in MiB (/usr/bin/time's %M), its output. Exits with the output's tail if it fails."""
     import tempfile
-    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+    # through /usr/bin/time for the peak RSS: a child forked from this (large) Python process would
+    # report this process's RSS as its own peak, which exec keeps
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err, tempfile.NamedTemporaryFile("r") as rss:
         with cpu_lock() if lock else contextlib.nullcontext():
             start = time.perf_counter()
-            p = subprocess.Popen(cmd, stdout=out, stderr=err, env=env, cwd=cwd)
-            _, status, usage = os.wait4(p.pid, 0)
+            p = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", rss.name] + cmd, stdout=out, stderr=err, env=env, cwd=cwd)
             wall = time.perf_counter() - start
-        p.returncode = os.waitstatus_to_exitcode(status)
         out.seek(0)
         err.seek(0)
         o = out.read().decode(errors="replace")
         e = err.read().decode(errors="replace")
+        lines = rss.read().split()
     if p.returncode != 0:
         sys.stderr.write(o[-3000:] + e[-3000:])
         sys.exit(f"peers: failed ({p.returncode}): {' '.join(cmd)}")
-    return {"wall": wall, "rss_mib": usage.ru_maxrss / 1024, "out": o, "err": e}
+    return {"wall": wall, "rss_mib": int(lines[-1]) / 1024 if lines else float("nan"), "out": o, "err": e}
 
 
 def spread(values):
