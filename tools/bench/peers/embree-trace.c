@@ -11,7 +11,10 @@
  *            geometric) normal turned towards the viewer (our renderer traces no ray otherwise),
  *            one occlusion ray (rtcOccluded1) from the hit point, offset along that normal, to
  *            just short of the light (direction = light - origin, tfar = 1 - 1e-5).
- * on T OpenMP threads (rows handed out dynamically). It prints the load, build and the median and
+ * on T OpenMP threads (rows handed out dynamically). The rays are made before the timed passes
+ * (the primary rays' directions once, the shadow rays once from the hits of an untimed first
+ * primary pass), so that the times are Embree's traversal and intersection (with the copy of each
+ * ray into Embree's struct and of its result out). It prints the load, build and the median and
  * range of the trace times (primary, shadow, total) over the repetitions, and the counts (rays,
  * hits on the mesh and the plane, shadow rays, blocked) so that they can be checked against
  * `render scenes/bench-dragon.yaml --stats`.
@@ -389,33 +392,59 @@ int main(int argc, char **argv) {
     if (!hits || !blocked) die("out of memory", NULL);
 
     double *tp = malloc(o.reps * sizeof(double)), *ts = malloc(o.reps * sizeof(double)), *tt = malloc(o.reps * sizeof(double));
-    long mesh_hits = 0, plane_hits = 0, misses = 0, shadow_rays = 0, shadow_blocked = 0;
+    long mesh_hits = 0, plane_hits = 0, misses = 0;
     const float eps = (float) o.shadow_eps;
 
-    for (int rep = 0; rep < o.reps; rep++) {
+    /* The rays are made before the timed passes (the trace is Embree's work alone): the primary
+     * rays' directions here, the shadow rays from the hits of an untimed first primary pass. */
+    double t_setup0 = now();
+    float *pdir = malloc((size_t) W * H * 3 * sizeof(float));
+    float *ptplane = malloc((size_t) W * H * sizeof(float));
+    if (!pdir || !ptplane) die("out of memory", NULL);
+#pragma omp parallel for schedule(static)
+    for (int y = 0; y < H; y++) {
+        for (int x = 0; x < W; x++) {
+            size_t i = (size_t) y * W + x;
+            V3 d = camera_dir(&cam, x + 0.5, y + 0.5);
+            pdir[3 * i] = (float) d.x;
+            pdir[3 * i + 1] = (float) d.y;
+            pdir[3 * i + 2] = (float) d.z;
+            float t_plane = INFINITY;
+            if (o.plane_apart) {
+                double denom = dot(d, plane_n);
+                double t = denom != 0 ? dot(sub(o.plane_point, cam.eye), plane_n) / denom : -1;
+                if (t > 0) t_plane = (float) t;
+            }
+            ptplane[i] = t_plane;
+        }
+    }
+    double t_setup_primary = now() - t_setup0;
+    const float ex = (float) cam.eye.x, ey = (float) cam.eye.y, ez = (float) cam.eye.z;
+
+    /* one shadow ray: origin, direction, and which pixel and light it serves */
+    typedef struct { float org[3], dir[3]; unsigned pixel; unsigned char light, plane_blocks; } Shadow;
+    Shadow *shadows = NULL;
+    unsigned char *occluded = NULL;
+    long nshadow = 0;
+    double t_setup_shadow = 0;
+
+    for (int rep = -1; rep < o.reps; rep++) { /* rep -1: the untimed pass that the shadow rays start from */
         long mh = 0, ph = 0, mi = 0;
         double a = now();
 #pragma omp parallel for schedule(dynamic, 2) reduction(+ : mh, ph, mi)
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
-                V3 d = camera_dir(&cam, x + 0.5, y + 0.5);
+                size_t i = (size_t) y * W + x;
                 struct RTCRayHit rh;
-                rh.ray.org_x = (float) cam.eye.x;
-                rh.ray.org_y = (float) cam.eye.y;
-                rh.ray.org_z = (float) cam.eye.z;
+                rh.ray.org_x = ex;
+                rh.ray.org_y = ey;
+                rh.ray.org_z = ez;
                 rh.ray.tnear = 0;
-                rh.ray.dir_x = (float) d.x;
-                rh.ray.dir_y = (float) d.y;
-                rh.ray.dir_z = (float) d.z;
+                rh.ray.dir_x = pdir[3 * i];
+                rh.ray.dir_y = pdir[3 * i + 1];
+                rh.ray.dir_z = pdir[3 * i + 2];
                 rh.ray.time = 0;
-                rh.ray.tfar = INFINITY;
-                float t_plane = INFINITY;
-                if (o.plane_apart) {
-                    double denom = dot(d, plane_n);
-                    double t = denom != 0 ? dot(sub(o.plane_point, cam.eye), plane_n) / denom : -1;
-                    if (t > 0) t_plane = (float) t;
-                    rh.ray.tfar = t_plane;
-                }
+                rh.ray.tfar = ptplane[i]; /* +inf unless the plane is apart */
                 rh.ray.mask = 0xFFFFFFFFu;
                 rh.ray.id = 0;
                 rh.ray.flags = 0;
@@ -428,15 +457,15 @@ int main(int argc, char **argv) {
                 rtcInitIntersectContext(&ctx);
                 rtcIntersect1(scene, &ctx, &rh);
 #endif
-                Hit *h = &hits[(size_t) y * W + x];
+                Hit *h = &hits[i];
                 h->geom = rh.hit.geomID;
                 h->t = rh.ray.tfar;
                 h->ng[0] = rh.hit.Ng_x;
                 h->ng[1] = rh.hit.Ng_y;
                 h->ng[2] = rh.hit.Ng_z;
-                if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID && t_plane < INFINITY) {
+                if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID && ptplane[i] < INFINITY) {
                     h->geom = PLANE_APART_ID;
-                    h->t = t_plane;
+                    h->t = ptplane[i];
                     h->ng[0] = (float) plane_n.x;
                     h->ng[1] = (float) plane_n.y;
                     h->ng[2] = (float) plane_n.z;
@@ -447,56 +476,71 @@ int main(int argc, char **argv) {
             }
         }
         double b = now();
-        long sr = 0, sb = 0;
-#pragma omp parallel for schedule(dynamic, 2) reduction(+ : sr, sb)
-        for (int y = 0; y < H; y++) {
-            for (int x = 0; x < W; x++) {
-                size_t i = (size_t) y * W + x;
+        if (rep == -1) {
+            /* the shadow rays of these hits, in pixel order, made once */
+            double s0 = now();
+            shadows = malloc((size_t) W * H * o.nlights * sizeof(Shadow));
+            occluded = malloc((size_t) W * H * o.nlights);
+            if (!shadows || !occluded) die("out of memory", NULL);
+            for (size_t i = 0; i < (size_t) W * H; i++) {
                 const Hit *h = &hits[i];
                 if (h->geom == RTC_INVALID_GEOMETRY_ID) continue;
                 V3 p, n;
-                hit_frame(&cam, h, x + 0.5, y + 0.5, &p, &n);
+                hit_frame(&cam, h, i % W + 0.5, i / W + 0.5, &p, &n);
                 for (int l = 0; l < o.nlights; l++) {
                     V3 to = sub(o.light[l], p);
-                    if (dot(n, to) <= 0) {
-                        blocked[i * MAX_LIGHTS + l] = 0;
-                        continue; /* the light is behind the surface: no ray, as ours */
-                    }
+                    if (dot(n, to) <= 0) continue; /* the light is behind the surface: no ray, as ours */
                     /* the origin off the surface by eps (relative to the point's size), towards the light */
                     double off = eps * (1 + fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
                     V3 org = add(p, scale(n, off));
                     V3 dir = sub(o.light[l], org);
-                    if (o.plane_apart && dot(sub(org, o.plane_point), plane_n) * dot(sub(o.light[l], o.plane_point), plane_n) < 0) {
-                        blocked[i * MAX_LIGHTS + l] = 2; /* the plane lies between */
-                        sr++;
-                        sb++;
-                        continue;
-                    }
-                    struct RTCRay r;
-                    r.org_x = (float) org.x;
-                    r.org_y = (float) org.y;
-                    r.org_z = (float) org.z;
-                    r.tnear = 0;
-                    r.dir_x = (float) dir.x;
-                    r.dir_y = (float) dir.y;
-                    r.dir_z = (float) dir.z;
-                    r.time = 0;
-                    r.tfar = 1.0f - 1e-5f;
-                    r.mask = 0xFFFFFFFFu;
-                    r.id = 0;
-                    r.flags = 0;
-#if EMBREE_MAJOR >= 4
-                    rtcOccluded1(scene, &r, NULL);
-#else
-                    struct RTCIntersectContext ctx;
-                    rtcInitIntersectContext(&ctx);
-                    rtcOccluded1(scene, &ctx, &r);
-#endif
-                    int hit = r.tfar == -INFINITY;
-                    blocked[i * MAX_LIGHTS + l] = hit ? 2 : 1;
-                    sr++;
-                    sb += hit;
+                    Shadow *sh = &shadows[nshadow++];
+                    sh->org[0] = (float) org.x;
+                    sh->org[1] = (float) org.y;
+                    sh->org[2] = (float) org.z;
+                    sh->dir[0] = (float) dir.x;
+                    sh->dir[1] = (float) dir.y;
+                    sh->dir[2] = (float) dir.z;
+                    sh->pixel = (unsigned) i;
+                    sh->light = (unsigned char) l;
+                    sh->plane_blocks = o.plane_apart && dot(sub(org, o.plane_point), plane_n) * dot(sub(o.light[l], o.plane_point), plane_n) < 0;
                 }
+            }
+            t_setup_shadow = now() - s0;
+            continue;
+        }
+        /* the shadow rays, in chunks of two rows' worth, as the primary rays */
+        const long chunk = 2L * W;
+#pragma omp parallel for schedule(dynamic, 1)
+        for (long c0 = 0; c0 < nshadow; c0 += chunk) {
+            long c1 = c0 + chunk < nshadow ? c0 + chunk : nshadow;
+            for (long k = c0; k < c1; k++) {
+                const Shadow *sh = &shadows[k];
+                if (sh->plane_blocks) { /* the plane lies between */
+                    occluded[k] = 1;
+                    continue;
+                }
+                struct RTCRay r;
+                r.org_x = sh->org[0];
+                r.org_y = sh->org[1];
+                r.org_z = sh->org[2];
+                r.tnear = 0;
+                r.dir_x = sh->dir[0];
+                r.dir_y = sh->dir[1];
+                r.dir_z = sh->dir[2];
+                r.time = 0;
+                r.tfar = 1.0f - 1e-5f;
+                r.mask = 0xFFFFFFFFu;
+                r.id = 0;
+                r.flags = 0;
+#if EMBREE_MAJOR >= 4
+                rtcOccluded1(scene, &r, NULL);
+#else
+                struct RTCIntersectContext ctx;
+                rtcInitIntersectContext(&ctx);
+                rtcOccluded1(scene, &ctx, &r);
+#endif
+                occluded[k] = r.tfar == -INFINITY;
             }
         }
         double c = now();
@@ -506,14 +550,18 @@ int main(int argc, char **argv) {
         mesh_hits = mh;
         plane_hits = ph;
         misses = mi;
-        shadow_rays = sr;
-        shadow_blocked = sb;
+    }
+    long shadow_rays = nshadow, shadow_blocked = 0;
+    for (long k = 0; k < nshadow; k++) {
+        shadow_blocked += occluded[k];
+        blocked[(size_t) shadows[k].pixel * MAX_LIGHTS + shadows[k].light] = occluded[k] ? 2 : 1;
     }
 
     long rays = (long) W * H;
     printf("embree %ld.%ld.%ld (Embree %d API), %d threads, %d repetitions\n", version / 10000, version / 100 % 100, version % 100,
            EMBREE_MAJOR, o.threads, o.reps);
-    printf("mesh %s: %zu triangles, %zu vertices; load %.3f s, build %.3f s\n", o.obj, mesh.nt, mesh.nv, t_load, t_build);
+    printf("mesh %s: %zu triangles, %zu vertices; load %.3f s, build %.3f s; rays made before the timed passes "
+           "(untimed): primary %.3f s, shadow %.3f s (one thread)\n", o.obj, mesh.nt, mesh.nv, t_load, t_build, t_setup_primary, t_setup_shadow);
     printf("plane: %s\n", !o.has_plane ? "none" : o.plane_apart ? "apart (computed per ray; it clips the primary rays' tfar)" : "in Embree's scene (two triangles)");
     printf("rays: primary %ld (mesh %ld, plane %ld, miss %ld), shadow %ld, blocked %ld (%.2f%%)\n", rays, mesh_hits, plane_hits,
            misses, shadow_rays, shadow_blocked, 100.0 * shadow_blocked / (shadow_rays ? shadow_rays : 1));
