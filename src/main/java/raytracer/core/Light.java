@@ -1,5 +1,7 @@
 package raytracer.core;
 
+import java.util.List;
+import raytracer.math.BBox;
 import raytracer.math.HalfSpace;
 import raytracer.math.MutableRgb;
 import raytracer.math.MutableVec3;
@@ -102,6 +104,14 @@ public abstract class Light {
      */
     public double pdf(ShadeRec sr) {
         return 1;
+    }
+
+    /**
+     * Called by {@link World#prepare} with the bounding boxes of the scene's objects, the only
+     * places its light can fall: a light with a choice of how to draw its samples makes it here,
+     * once for the frame, the same at every point.
+     */
+    public void prepare(List<BBox> receivers) {
     }
 
     /**

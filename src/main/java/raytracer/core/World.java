@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.function.UnaryOperator;
+import raytracer.math.BBox;
 import raytracer.math.RGBColor;
 import raytracer.math.Ray;
 
@@ -92,6 +93,10 @@ public final class World {
         objects = organized.toArray(new GeometricObject[0]);
         shadowCasters = organized.stream().filter(GeometricObject::castsShadows).toArray(GeometricObject[]::new);
         lights = lightList.toArray(new Light[0]);
+        List<BBox> receivers = objectList.stream().map(GeometricObject::boundingBox).toList();
+        for (Light light : lights) {
+            light.prepare(receivers);
+        }
     }
 
     /**

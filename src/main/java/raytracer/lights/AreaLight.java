@@ -1,8 +1,10 @@
 package raytracer.lights;
 
+import java.util.List;
 import raytracer.core.Light;
 import raytracer.core.Sampler;
 import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
 import raytracer.math.HalfSpace;
 import raytracer.math.RGBColor;
 import raytracer.math.MutableRgb;
@@ -14,11 +16,11 @@ import raytracer.math.MutableVec3;
  * each by Le f G cos(theta_i) / pdf with {@link #G} = cos(theta_light) / d^2 and {@link #pdf} the
  * sample's density over the light's area: the average is an unbiased estimate of the integral of
  * Le f cos(theta_i) over the solid angle the light covers. Soft shadows follow from the shadow ray
- * of each sample. The book samples uniformly by area (pdf = 1 / area); here a rectangle and a
- * sphere are sampled uniformly over the solid angle they cover at the shaded point
- * ({@link RectangleEmitter}, {@link SphereEmitter}), so that G / pdf is that solid angle and only
- * the cosine at the shaded point, the BRDF and the shadows vary between samples; a disk, as in
- * pbrt, by area.
+ * of each sample. The book samples uniformly by area (pdf = 1 / area); here a sphere, and a
+ * rectangle that some object lies near, are sampled uniformly over the solid angle they cover at the
+ * shaded point ({@link SphereEmitter}, {@link RectangleEmitter}), so that G / pdf is that solid
+ * angle and only the cosine at the shaded point, the BRDF and the shadows vary between samples; a
+ * disk, as in pbrt, and a rectangle far from everything by area.
  */
 public final class AreaLight extends Light {
     private final Emitter emitter;
@@ -46,6 +48,22 @@ public final class AreaLight extends Light {
 
     public static AreaLight sphere(raytracer.math.Point3D center, double radius, double ls, RGBColor color, int samples) {
         return new AreaLight(new SphereEmitter(center, radius), ls, color, samples);
+    }
+
+    /**
+     * Fixes how a rectangle light draws its samples, by solid angle or by area, instead of letting
+     * {@link #prepare} choose by what lies near it (the scene key {@code sampling}).
+     */
+    public void sampleBySolidAngle(boolean bySolidAngle) {
+        if (!(emitter instanceof RectangleEmitter rectangle)) {
+            throw new IllegalArgumentException("only a rectangle light has a choice of sampling");
+        }
+        rectangle.fix(bySolidAngle);
+    }
+
+    @Override
+    public void prepare(List<BBox> receivers) {
+        emitter.prepare(receivers);
     }
 
     @Override

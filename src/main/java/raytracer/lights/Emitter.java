@@ -1,5 +1,6 @@
 package raytracer.lights;
 
+import java.util.List;
 import raytracer.math.BBox;
 import raytracer.math.MutableVec3;
 
@@ -34,6 +35,10 @@ interface Emitter {
     void moveOff(MutableVec3 point, MutableVec3 normal);
 
     /** A box around every point of the emitter. */
+    /** Chooses how to draw samples for a frame whose lit objects lie in {@code receivers} ({@link raytracer.core.Light#prepare}). */
+    default void prepare(List<BBox> receivers) {
+    }
+
     BBox bounds();
 
     /**

@@ -215,6 +215,11 @@ public final class Instance extends GeometricObject implements LocalFrame {
     @Override
     public BBox boundingBox() {
         BBox box = object.boundingBox();
-        return box.isBounded() ? forward.transform(box) : box;
+        if (box.isBounded()) {
+            return forward.transform(box);
+        }
+        // an unbounded box (a plane's slab, say) turned by the transform bounds nothing narrower than space
+        double inf = Double.POSITIVE_INFINITY;
+        return new BBox(-inf, -inf, -inf, inf, inf, inf);
     }
 }

@@ -79,7 +79,17 @@ public final class Plane extends GeometricObject {
 
     @Override
     public BBox boundingBox() {
-        return new BBox(Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
-                        Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
+        double inf = Double.POSITIVE_INFINITY;
+        // a plane normal to an axis lies exactly at its point's coordinate on that axis
+        if (nx == 0 && nz == 0) {
+            return new BBox(-inf, ay, -inf, inf, ay, inf);
+        }
+        if (ny == 0 && nz == 0) {
+            return new BBox(ax, -inf, -inf, ax, inf, inf);
+        }
+        if (nx == 0 && ny == 0) {
+            return new BBox(-inf, -inf, az, inf, inf, az);
+        }
+        return new BBox(-inf, -inf, -inf, inf, inf, inf);
     }
 }

@@ -151,11 +151,10 @@ class AreaLightTest {
      * The book's estimator without a render: the mean over a fine stratified grid of samples of
      * Le G cos(theta_i) / pdf, from the light's own sample, G and pdf, is the irradiance; and pdf is
      * the density of the light's sampling, computed here independently: 1 / area for the disk
-     * (area pi R^2) and for the 2 x 1 rectangle 2 above (its farthest corner is 1.31 times as far
-     * as its nearest point in d^2, too little for solid-angle sampling to pay); G / Omega for the
-     * sphere, sampled uniformly over the solid angle Omega = 2 pi (1 - sqrt(1 - (R / D)^2)) it
-     * covers D away, and for the same rectangle 0.25 above (21 times in d^2), over its
-     * Omega = 4 asin(a b / sqrt((a^2 + h^2)(b^2 + h^2))), a 2a x 2b rectangle centred h above.
+     * (area pi R^2); G / Omega for the sphere, sampled uniformly over the solid angle
+     * Omega = 2 pi (1 - sqrt(1 - (R / D)^2)) it covers D away, and for the 2 x 1 rectangle 2 and
+     * 0.25 above, over its Omega = 4 asin(a b / sqrt((a^2 + h^2)(b^2 + h^2))), a 2a x 2b rectangle
+     * centred h above.
      */
     @ParameterizedTest
     @ValueSource(strings = {"disk", "sphere", "rectangle", "near rectangle"})
@@ -178,7 +177,7 @@ class AreaLightTest {
         for (int i = 0; i < grid; i++) {
             for (int j = 0; j < grid; j++) {
                 light.sample(sr, (i + 0.5) / grid, (j + 0.5) / grid, wi);
-                double pdf = kind.equals("disk") ? 1 / Math.PI : kind.equals("rectangle") ? 1 / 2.0 : light.G(sr) / solidAngle;
+                double pdf = kind.equals("disk") ? 1 / Math.PI : light.G(sr) / solidAngle;
                 assertEquals(pdf, light.pdf(sr), 1e-12 * pdf, kind + ": the sampling's density");
                 light.L(sr, le);
                 double cos = Math.max(0, sr.normal.dot(wi));

@@ -73,11 +73,10 @@ class LightSampleLimitsTest {
     }
 
     /**
-     * Where a rectangle is near or large it is sampled by solid angle, G / pdf being that solid
-     * angle, unless the solid angle is below what the map resolves; then, as where it is small and
-     * far, by area, pdf being 1 / area. A 1 x 1 light seen edge-on from 1e-4 and 1e-7 below its
-     * plane, 1 to 2 away (about 4e-5 and 4e-8 sr; its farthest corner is 2 times as far as its
-     * nearest point), and from 600 away (2.8e-6 sr, but nearly as far everywhere).
+     * A rectangle is sampled by solid angle, G / pdf being that solid angle, unless the solid angle
+     * is below what the map resolves; then, edge-on or small and far, by area, pdf being 1 / area.
+     * A 1 x 1 light seen edge-on from 1e-4 and 1e-7 below its plane, 1 to 2 away (about 4e-5 and
+     * 4e-8 sr), and from 600 away (2.8e-6 sr).
      */
     @Test
     void tinySolidAnglesAreSampledByArea() {

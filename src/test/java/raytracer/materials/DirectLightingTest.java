@@ -77,15 +77,14 @@ class DirectLightingTest {
     }
 
     /**
-     * A rectangle light facing -x at x = 3, 2 wide in z and 1.5 high, reaching through the floor's
-     * plane: its part above the floor may light the point, so the light is not passed over as a
-     * whole, and the one sample (at the rectangle's centre, as the one-point sampler puts it) is
-     * taken at height {@code centreY}: seen from the origin the rectangle is nearly as far
-     * everywhere (its farthest corner 1.22 times its nearest point in d^2), so it is sampled by
-     * area, not by solid angle.
+     * A parallelogram light facing -x at x = 3, area 3 (edges 2 along z and (0, 1.5, 0.3)), reaching
+     * through the floor's plane: its part above the floor may light the point, so the light is not
+     * passed over as a whole, and the one sample is taken at its centre (0.5, 0.5 of the edges, as
+     * the one-point sampler puts it; its edges are not perpendicular, so it is sampled by area, not by
+     * solid angle), at height {@code centreY}.
      */
     private static AreaLight straddling(double centreY) {
-        return AreaLight.rectangle(new Point3D(3, centreY - 0.75, -1), new Vector3D(0, 0, 2), new Vector3D(0, 1.5, 0), 4,
+        return AreaLight.rectangle(new Point3D(3, centreY - 0.75, -1.15), new Vector3D(0, 0, 2), new Vector3D(0, 1.5, 0.3), 4,
                                    RGBColor.WHITE, 1);
     }
 

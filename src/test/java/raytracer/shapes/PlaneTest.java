@@ -10,6 +10,8 @@ import static raytracer.shapes.HitTesting.ray;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import raytracer.core.ShadeRec;
+import raytracer.math.BBox;
+import raytracer.math.Matrix4;
 import raytracer.math.Normal;
 import raytracer.math.Point3D;
 
@@ -83,5 +85,18 @@ class PlaneTest {
         double s = Math.sqrt(0.5);
         Plane tilted = new Plane(new Point3D(1, 2, 3), new Normal(1, 1, 0));
         h.assertGrazingFaces(tilted, new double[] {1, 2, 3}, new double[] {s, s, 0}, new double[] {0, 0, 1});
+    }
+
+    /** Its box is a slab where the normal is an axis (lights read it to know what lies near them), else all of space. */
+    @Test
+    void aPlaneNormalToAnAxisIsBoundedAlongIt() {
+        double inf = Double.POSITIVE_INFINITY;
+        assertEquals(new BBox(-inf, -2.5, -inf, inf, -2.5, inf), new Plane(new Point3D(7, -2.5, 3), new Normal(0, -3, 0)).boundingBox());
+        assertEquals(new BBox(1, -inf, -inf, 1, inf, inf), new Plane(new Point3D(1, 5, 5), new Normal(2, 0, 0)).boundingBox());
+        assertEquals(new BBox(-inf, -inf, 4, inf, inf, 4), new Plane(new Point3D(0, 0, 4), new Normal(0, 0, 1)).boundingBox());
+        BBox all = new BBox(-inf, -inf, -inf, inf, inf, inf);
+        assertEquals(all, new Plane(new Point3D(0, 0, 0), new Normal(0, 1, 1e-300)).boundingBox());
+        // turned by an instance, the slab would lie elsewhere: it bounds nothing narrower than space
+        assertEquals(all, new Instance(new Plane(new Point3D(0, 1, 0), new Normal(0, 1, 0)), Matrix4.rotateX(30)).boundingBox());
     }
 }

@@ -23,7 +23,7 @@ public final class BuiltInTypes implements Registration {
 
         registrar.light("point", Set.of("position", "intensity", "color"), LightReader::point);
         registrar.light("directional", Set.of("direction", "radiance", "color"), LightReader::directional);
-        registrar.light("rectangle", with(AREA_LIGHT, "corner", "edge-a", "edge-b"), SceneFactory.of(LightReader::rectangle));
+        registrar.light("rectangle", with(AREA_LIGHT, "corner", "edge-a", "edge-b", "sampling"), SceneFactory.of(LightReader::rectangle));
         registrar.light("disk", with(AREA_LIGHT, "center", "normal", "radius"), SceneFactory.of(LightReader::disk));
         registrar.light("sphere", with(AREA_LIGHT, "center", "radius"), SceneFactory.of(LightReader::sphere));
 

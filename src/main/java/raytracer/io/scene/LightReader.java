@@ -1,5 +1,6 @@
 package raytracer.io.scene;
 
+import java.util.List;
 import java.util.OptionalInt;
 import java.util.Set;
 import org.yaml.snakeyaml.nodes.Node;
@@ -88,7 +89,16 @@ final class LightReader {
         Point3D corner = l.requiredPoint("corner");
         Vector3D a = l.requiredVector("edge-a");
         Vector3D b = l.requiredVector("edge-b");
-        return visible(p, e, AreaLight.rectangle(corner, a, b, e.ls, e.color, e.samples), new Rectangle(corner, a, b));
+        AreaLight light = AreaLight.rectangle(corner, a, b, e.ls, e.color, e.samples);
+        String sampling = l.choice("sampling", "auto", List.of("auto", "solid-angle", "area"));
+        if (!sampling.equals("auto")) {
+            try {
+                light.sampleBySolidAngle(sampling.equals("solid-angle"));
+            } catch (IllegalArgumentException ex) {
+                throw l.error("sampling", ex.getMessage());
+            }
+        }
+        return visible(p, e, light, new Rectangle(corner, a, b));
     }
 
     static Light disk(YamlParameters p) throws SceneException {

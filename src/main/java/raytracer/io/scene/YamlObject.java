@@ -120,6 +120,20 @@ final class YamlObject {
         return value == null ? fallback : scalarText(value, key);
     }
 
+    /** An error at {@code key}'s value, or at this mapping when the key is absent. */
+    SceneException error(String key, String message) {
+        return source.error(values.containsKey(key) ? values.get(key) : node, message);
+    }
+
+    /** A value that must be one of {@code allowed}; {@code fallback} when the key is absent. */
+    String choice(String key, String fallback, java.util.List<String> allowed) throws SceneException {
+        String value = string(key, fallback);
+        if (!allowed.contains(value)) {
+            throw source.error(values.get(key), "'" + key + "' in " + what + " must be one of " + String.join(", ", allowed) + ", got '" + value + "'");
+        }
+        return value;
+    }
+
     String requiredString(String key) throws SceneException {
         return scalarText(required(key), key);
     }
