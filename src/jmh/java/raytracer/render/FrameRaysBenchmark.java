@@ -28,8 +28,8 @@ import raytracer.math.MutableVec3;
  * The rays of a benchmark frame (scenes/bench-*.yaml, 1 sample per pixel, two point lights),
  * replayed one per operation in the renderer's tile order on one thread: the closest-hit search of
  * each primary ray (with the winner's completion) and the any-hit search of each shadow ray,
- * without shading. This is where the frame's time goes (docs/performance.md, "Goals, and where the
- * time goes"); the set-up prints how many box tests each kind of ray makes.
+ * without shading: where the frame's time goes (docs/performance.md, "JMH benchmarks"; figures of
+ * 23 November 2026 in its history); the set-up prints how many box tests each kind of ray makes.
  */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)

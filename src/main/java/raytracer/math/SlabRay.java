@@ -79,7 +79,7 @@ public final class SlabRay {
         // entry clamped at 0 is exact, and the smallest exit is exact or negative when one exit
         // is negative, which is a miss either way. Math.max(long) is a conditional move, where
         // Math.max(double) spends a blend sequence on NaN and -0.0 rules (the traversal ran 1.35
-        // times as fast without it, docs/performance.md), and comparisons of doubles would be
+        // times as fast without it: docs/performance.md's history), and comparisons of doubles would be
         // mispredicted branches.
         double t0 = Double.longBitsToDouble(Math.max(Math.max(bits(tx0), bits(ty0)), Math.max(bits(tz0), 0L)));
         double t1 = Double.longBitsToDouble(Math.min(Math.min(bits(tx1), bits(ty1)), Math.min(bits(tz1), bits(tMax))));

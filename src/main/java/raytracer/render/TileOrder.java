@@ -12,7 +12,7 @@ import raytracer.core.GeometricObject;
  * <p>{@link #tiles}: the row-major list permuted by bit reversal of the index (van der Corput), so
  * that every aligned run of 2^k successive tiles, each half the fork/join split hands a worker
  * among them ({@link TileRange}), is spread over the whole image (taken row by row, the first tiles were a strip of floor or sky,
- * where a shadow ray never meets a triangle behind its origin: docs/performance.md, "Tile order").
+ * where a shadow ray never meets a triangle behind its origin: docs/performance.md, "Cold and warm runs").
  *
  * <p>{@link #warmUpFirst}: spread over the image is not enough when an object fills only part of
  * it. On the dragon's bench frame the first two tiles of both workers were floor alone: camera
