@@ -125,7 +125,10 @@ class ShowWindowTest {
             child.destroyForcibly();
             fail("the window's JVM did not end: " + err.getNow(""));
         }
-        return new Run(child.exitValue(), err.get(10, TimeUnit.SECONDS));
+        Run run = new Run(child.exitValue(), err.get(10, TimeUnit.SECONDS));
+        // when the screen stayed unpainted and the window's own painting was compared, the log says so
+        run.err().lines().filter(line -> line.startsWith("show-capture:")).forEach(System.out::println);
+        return run;
     }
 
     private static int[] pixels(Path png) throws IOException {
