@@ -4,26 +4,26 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 
 /**
- * A {@link FlatBVH} in bytes, for the mesh cache: the arrays of {@link BvhNodes}, the leaf order and
+ * A {@link FlatBVH} in bytes, for the mesh cache: the arrays of {@link WideNodes}, the leaf order and
  * the root, each copied in bulk (little-endian, the order of the machines this runs on, so the
  * copies are plain memory copies), through a {@link Sink} and back from a {@link Source}, which
  * the mesh cache streams through a small buffer, or a ByteBuffer.
  *
  * <pre>
  *   int nodes, int primitives
- *   float[12 nodes] bounds, int[4 nodes] children, int[primitives] order
+ *   float[24 nodes] bounds, int[8 nodes] children, int[primitives] order
  *   float[6] root box, int root link, int root count
  * </pre>
  *
  * A tree without an order ({@link FlatBVH#inLeafOrder}) writes {@code -primitives} and no order.
  *
- * <p><b>Whoever changes the layout of {@link BvhNodes} or {@link FlatBVH} (what an array holds,
+ * <p><b>Whoever changes the layout of {@link WideNodes} or {@link FlatBVH} (what an array holds,
  * their order, a new field) must change it here and add 1 to {@link #VERSION}</b>: a cache written
  * by another version is then rebuilt rather than misread.
  */
 public final class BvhFile {
     /** The layout above; the mesh cache keys its files by it. */
-    public static final int VERSION = 2;
+    public static final int VERSION = 3;
 
     /** Where the bytes go: little-endian values, arrays in bulk. */
     public interface Sink {
@@ -90,11 +90,11 @@ public final class BvhFile {
         boolean inLeafOrder = written < 0;
         int primitives = inLeafOrder ? -written : written;
         if (count < 0 || written == 0 || written == Integer.MIN_VALUE
-            || 4L * (BvhNodes.BOUNDS_PER_NODE + BvhNodes.CHILDREN_PER_NODE) * count + (inLeafOrder ? 0 : 4L * primitives)
+            || 4L * (WideNodes.BOUNDS_PER_NODE + WideNodes.CHILDREN_PER_NODE) * count + (inLeafOrder ? 0 : 4L * primitives)
                > in.remaining()) {
             throw new IllegalArgumentException("a BVH of " + count + " nodes over " + written + " primitives does not fit");
         }
-        BvhNodes nodes = new BvhNodes(count);
+        WideNodes nodes = new WideNodes(count);
         in.getFloats(nodes.bounds);
         in.getInts(nodes.children);
         int[] order = null;
@@ -107,11 +107,10 @@ public final class BvhFile {
         int rootLink = in.getInt();
         int rootCount = in.getInt();
         checkChild(rootLink, rootCount, count, primitives);
-        for (int node = 0; node < count; node++) {
-            for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
-                checkChild(nodes.link(node, side), nodes.primitiveCount(node, side), count, primitives);
-            }
+        if (rootCount == 0 && (count == 0 || rootLink != 0)) {
+            throw new IllegalArgumentException("a BVH's root node is node 0, got " + rootLink + " of " + count);
         }
+        checkNodes(nodes, primitives);
         return new FlatBVH(nodes, order, primitives, rootBox, rootLink, rootCount);
     }
 
@@ -160,6 +159,34 @@ public final class BvhFile {
                 return in.remaining();
             }
         };
+    }
+
+    /**
+     * Every lane is empty, a leaf within the leaf order or a node after its parent (the
+     * depth-first numbering, so the links make no cycle), at most {@link FlatBVH#MAX_DEPTH} deep:
+     * so no traversal leaves the arrays or its stack.
+     */
+    private static void checkNodes(WideNodes nodes, int primitives) {
+        int count = nodes.count();
+        int[] depth = new int[count];
+        depth[0] = count == 0 ? 0 : 1;
+        for (int node = 0; node < count; node++) {
+            for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
+                int link = nodes.link(node, lane);
+                int children = nodes.primitiveCount(node, lane);
+                if (children == WideNodes.EMPTY) {
+                    continue;
+                }
+                checkChild(link, children, count, primitives);
+                if (children == 0) {
+                    if (link <= node || depth[node] >= FlatBVH.MAX_DEPTH) {
+                        throw new IllegalArgumentException("node " + node + " links to node " + link
+                                                           + ", not a node after it within " + FlatBVH.MAX_DEPTH + " levels");
+                    }
+                    depth[link] = depth[node] + 1;
+                }
+            }
+        }
     }
 
     /** An interior child links to a node; a leaf to a run of the leaf order. */
