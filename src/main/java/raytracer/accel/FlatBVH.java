@@ -21,6 +21,9 @@ public final class FlatBVH {
     /** The deepest binary tree the builders may produce (a wide tree is no deeper), which the traversal stacks have room for. */
     public static final int MAX_DEPTH = TraversalStack.MAX_DEPTH;
 
+    /** The node test, a constant the JIT inlines. */
+    private static final NodeTest TEST = NodeTest.CHOSEN;
+
     final WideNodes nodes;
     /**
      * Primitive ids in leaf order: a leaf (link, count) holds order[link .. link + count - 1]; null
@@ -179,7 +182,7 @@ public final class FlatBVH {
         int[] stackLinks = stack.links;
         int[] stackCounts = stack.counts;
         double[] stackEntries = stack.entries;
-        double[] entered = stack.children;
+        long[] keys = stack.keys;
         float[] bounds = nodes.bounds;
         int[] children = nodes.children;
         double tHit = tMax;
@@ -203,29 +206,40 @@ public final class FlatBVH {
             // descend to a leaf, or until the ray misses every child
             while (count == 0) {
                 boxTests += WideNodes.WIDTH;
-                slab.entries(bounds, WideNodes.boxesAt(link), tHit, entered);
-                // each lane's entry as its bits with the lane in the lowest two, so that sorting
-                // the four longs sorts the lanes by entry (a miss, +infinity, after every hit) and
-                // clearing those bits gives an entry a few ulps nearer at most: a subtree is then
-                // skipped only when the ray enters it beyond the hit, as before
-                long k0 = Double.doubleToRawLongBits(entered[0]) & ~3L;
-                long k1 = Double.doubleToRawLongBits(entered[1]) & ~3L | 1;
-                long k2 = Double.doubleToRawLongBits(entered[2]) & ~3L | 2;
-                long k3 = Double.doubleToRawLongBits(entered[3]) & ~3L | 3;
-                // a sorting network of five exchanges, conditional moves rather than branches
-                long a = Math.min(k0, k1);
-                long b = Math.max(k0, k1);
-                long c = Math.min(k2, k3);
-                long d = Math.max(k2, k3);
-                long first = Math.min(a, c);
-                long e = Math.max(a, c);
-                long f = Math.min(b, d);
-                long last = Math.max(b, d);
-                long second = Math.min(e, f);
-                long third = Math.max(e, f);
+                // the lanes' entries with the lane in their lowest bits: a subtree is then skipped
+                // only when the ray enters it beyond the hit, as before (NodeTest)
+                TEST.keys(slab, bounds, WideNodes.boxesAt(link), Double.doubleToRawLongBits(tHit), keys);
+                long k0 = keys[0];
+                long k1 = keys[1];
+                long k2 = keys[2];
+                long k3 = keys[3];
+                // a sorting network of five exchanges, without branches (keys are at most
+                // +infinity's bits plus 3, so differences do not overflow)
+                long d = k0 - k1;
+                d &= d >> 63;
+                long a = k1 + d;
+                long b = k0 - d;
+                d = k2 - k3;
+                d &= d >> 63;
+                long c = k3 + d;
+                long e = k2 - d;
+                d = a - c;
+                d &= d >> 63;
+                long first = c + d;
+                a -= d;
+                d = b - e;
+                d &= d >> 63;
+                long last = b - d;
+                b = e + d;
+                d = a - b;
+                d &= d >> 63;
+                long second = b + d;
+                long third = a - d;
                 if (first >= MISS) {
                     break;
                 }
+                // the ray goes on into the nearest; the others are stacked farthest first, each
+                // written and kept only if the ray enters it, without a branch
                 int at = WideNodes.linksAt(link);
                 top = push(last, at, children, stackLinks, stackCounts, stackEntries, top);
                 top = push(third, at, children, stackLinks, stackCounts, stackEntries, top);
@@ -252,15 +266,12 @@ public final class FlatBVH {
     /** The key of a lane the ray misses, +infinity's bits: every lane's key from here up is a miss. */
     private static final long MISS = Double.doubleToRawLongBits(Double.POSITIVE_INFINITY);
 
-    /** Stacks the child whose key is {@code key} unless the ray misses it; returns the new top. */
+    /** Writes the child whose key is {@code key} on top of the stack, and keeps it unless the ray misses it; returns the new top. */
     private static int push(long key, int at, int[] children, int[] links, int[] counts, double[] entries, int top) {
-        if (key >= MISS) {
-            return top;
-        }
         int lane = (int) key & 3;
         links[top] = children[at + lane];
         counts[top] = children[at + WideNodes.WIDTH + lane];
         entries[top] = Double.longBitsToDouble(key & ~3L);
-        return top + 1;
+        return top + (int) ((key - MISS) >>> 63);
     }
 }

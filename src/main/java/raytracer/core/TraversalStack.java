@@ -23,13 +23,13 @@ public final class TraversalStack {
     /**
      * One traversal's stack: entry i is a subtree (its link and primitive count, as the tree
      * stores a child) and the distance at which the ray enters its box; and where one node's
-     * test puts the distances at which the ray enters its children.
+     * test puts what it found of its children.
      */
     public static final class Frame {
         public final int[] links = new int[STACK_SIZE];
         public final int[] counts = new int[STACK_SIZE];
         public final double[] entries = new double[STACK_SIZE];
-        public final double[] children = new double[WIDTH];
+        public final long[] keys = new long[WIDTH];
         public final SlabRay ray = new SlabRay();
     }
 
