@@ -42,7 +42,7 @@ public final class BvhStudy {
             for (int r = 0; r < rounds; r++) {
                 long start = now();
                 binary = build(name, mesh);
-                wide = binary.collapsed();
+                wide = binary.flat();
                 times[r] = now() - start;
             }
             long first = times[0];

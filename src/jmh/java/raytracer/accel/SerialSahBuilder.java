@@ -24,7 +24,7 @@ public final class SerialSahBuilder {
     }
 
     public FlatBVH build(double[] primBounds) {
-        return binary(primBounds).collapsed();
+        return binary(primBounds).flat();
     }
 
     /** The binary tree that {@link #build} collapses into wide nodes. */

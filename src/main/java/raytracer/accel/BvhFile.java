@@ -4,22 +4,24 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 
 /**
- * A {@link FlatBVH} in bytes, for the mesh cache: the arrays of {@link WideNodes}, the leaf order and
+ * A {@link FlatBVH} in bytes, for the mesh cache: the arrays of {@link BvhNodes}, the leaf order and
  * the root, each copied in bulk (little-endian, the order of the machines this runs on, so the
  * copies are plain memory copies), through a {@link Sink} and back from a {@link Source}, which
  * the mesh cache streams through a small buffer, or a ByteBuffer.
  *
  * <pre>
  *   int nodes, int primitives
- *   float[24 nodes] bounds, int[8 nodes] children, int[primitives] order
+ *   float[12 nodes] bounds, int[4 nodes] children, int[primitives] order
  *   float[6] root box, int root link, int root count
  * </pre>
  *
  * A tree without an order ({@link FlatBVH#inLeafOrder}) writes {@code -primitives} and no order.
  *
- * <p><b>Whoever changes the layout of {@link WideNodes} or {@link FlatBVH} (what an array holds,
+ * <p><b>Whoever changes the layout of {@link BvhNodes} or {@link FlatBVH} (what an array holds,
  * their order, a new field) must change it here and add 1 to {@link #VERSION}</b>: a cache written
- * by another version is then rebuilt rather than misread.
+ * by another version is then rebuilt rather than misread. Version 3 keeps version 2's layout: it
+ * came with the parallel binned SAH builder, so that trees the serial SAH builder cached are built
+ * again.
  */
 public final class BvhFile {
     /** The layout above; the mesh cache keys its files by it. */
@@ -90,11 +92,11 @@ public final class BvhFile {
         boolean inLeafOrder = written < 0;
         int primitives = inLeafOrder ? -written : written;
         if (count < 0 || written == 0 || written == Integer.MIN_VALUE
-            || 4L * (WideNodes.BOUNDS_PER_NODE + WideNodes.CHILDREN_PER_NODE) * count + (inLeafOrder ? 0 : 4L * primitives)
+            || 4L * (BvhNodes.BOUNDS_PER_NODE + BvhNodes.CHILDREN_PER_NODE) * count + (inLeafOrder ? 0 : 4L * primitives)
                > in.remaining()) {
             throw new IllegalArgumentException("a BVH of " + count + " nodes over " + written + " primitives does not fit");
         }
-        WideNodes nodes = new WideNodes(count);
+        BvhNodes nodes = new BvhNodes(count);
         in.getFloats(nodes.bounds);
         in.getInts(nodes.children);
         int[] order = null;
@@ -107,8 +109,8 @@ public final class BvhFile {
         int rootLink = in.getInt();
         int rootCount = in.getInt();
         checkChild(rootLink, rootCount, count, primitives);
-        if (rootCount == 0 && (count == 0 || rootLink != 0)) {
-            throw new IllegalArgumentException("a BVH's root node is node 0, got " + rootLink + " of " + count);
+        if (rootCount == 0 && rootLink != 0) {
+            throw new IllegalArgumentException("a BVH's root is node 0, not " + rootLink);
         }
         checkNodes(nodes, primitives);
         return new FlatBVH(nodes, order, primitives, rootBox, rootLink, rootCount);
@@ -162,24 +164,20 @@ public final class BvhFile {
     }
 
     /**
-     * Every lane is empty, a leaf within the leaf order or a node after its parent (the
-     * depth-first numbering, so the links make no cycle), at most {@link FlatBVH#MAX_DEPTH} deep:
-     * so no traversal leaves the arrays or its stack.
+     * Every child is a leaf within the leaf order or a node after its parent (the depth-first
+     * numbering, so the links make no cycle) at most {@link FlatBVH#MAX_DEPTH} deep: no traversal
+     * leaves the arrays, loops, or outgrows its stack.
      */
-    private static void checkNodes(WideNodes nodes, int primitives) {
+    private static void checkNodes(BvhNodes nodes, int primitives) {
         int count = nodes.count();
         int[] depth = new int[count];
-        depth[0] = count == 0 ? 0 : 1;
         for (int node = 0; node < count; node++) {
-            for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
-                int link = nodes.link(node, lane);
-                int children = nodes.primitiveCount(node, lane);
-                if (children == WideNodes.EMPTY) {
-                    continue;
-                }
+            for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
+                int link = nodes.link(node, side);
+                int children = nodes.primitiveCount(node, side);
                 checkChild(link, children, count, primitives);
                 if (children == 0) {
-                    if (link <= node || depth[node] >= FlatBVH.MAX_DEPTH) {
+                    if (link <= node || depth[node] + 1 >= FlatBVH.MAX_DEPTH) {
                         throw new IllegalArgumentException("node " + node + " links to node " + link
                                                            + ", not a node after it within " + FlatBVH.MAX_DEPTH + " levels");
                     }

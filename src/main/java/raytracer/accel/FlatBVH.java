@@ -9,22 +9,18 @@ import raytracer.math.Ray;
 import raytracer.math.SlabRay;
 
 /**
- * A BVH flattened into arrays, and its traversal (report section 6): the interior nodes, four
- * children wide ({@link WideNodes}, collapsed from a builder's binary tree by {@link WideCollapse}),
- * the root apart (its box, and its link and count as a node stores a child's), and the leaf
- * order, which lists the primitives so that every leaf's are one run of it. What a leaf holds and
- * how it is tested is the business of {@link Leaves}. A tree over primitives already renumbered in
- * its leaf order (a mesh's triangles, {@link #inLeafOrder}) keeps no order: it would be 0, 1, 2,
- * ..., four bytes a triangle for nothing.
+ * A BVH flattened into arrays, and its traversal (report section 6): the interior nodes in the
+ * layout of {@link BvhNodes}, the root apart (its box, and its link and count as a node stores a
+ * child's), and the leaf order, which lists the primitives so that every leaf's are one run of it.
+ * What a leaf holds and how it is tested is the business of {@link Leaves}. A tree over primitives
+ * already renumbered in its leaf order (a mesh's triangles, {@link #inLeafOrder}) keeps no order:
+ * it would be 0, 1, 2, ..., four bytes a triangle for nothing.
  */
 public final class FlatBVH {
-    /** The deepest binary tree the builders may produce (a wide tree is no deeper), which the traversal stacks have room for. */
+    /** The deepest tree the builders may produce: the depth the traversal stacks have room for. */
     public static final int MAX_DEPTH = TraversalStack.MAX_DEPTH;
 
-    /** The node test, a constant the JIT inlines. */
-    private static final NodeTest TEST = NodeTest.CHOSEN;
-
-    final WideNodes nodes;
+    final BvhNodes nodes;
     /**
      * Primitive ids in leaf order: a leaf (link, count) holds order[link .. link + count - 1]; null
      * when the primitives are numbered in leaf order, so that the leaf holds link .. link + count - 1.
@@ -44,8 +40,12 @@ public final class FlatBVH {
     record Start(float[] box, int at, int link, int count) {
     }
 
+    FlatBVH(BvhNodes nodes, int[] order, float[] rootBox, int rootLink, int rootCount) {
+        this(nodes, order, order.length, rootBox, rootLink, rootCount);
+    }
+
     /** A tree whose primitives are numbered in its leaf order when {@code order} is null. */
-    FlatBVH(WideNodes nodes, int[] order, int primitives, float[] rootBox, int rootLink, int rootCount) {
+    FlatBVH(BvhNodes nodes, int[] order, int primitives, float[] rootBox, int rootLink, int rootCount) {
         if (order != null && order.length != primitives) {
             throw new IllegalArgumentException("the leaf order lists " + order.length + " of " + primitives + " primitives");
         }
@@ -60,13 +60,13 @@ public final class FlatBVH {
 
     /**
      * The subtree where the search of a ray that stays in {@code volume} may start, or null when
-     * no such ray can reach a leaf: from the root down, as long as the volume wholly excludes all
-     * but one child's box ({@link HalfSpace#excludes}, a margin far above the slab test's
-     * rounding). Such a ray misses the excluded boxes, so from the root it would have tested every
-     * box of every node above the subtree, stacked nothing, and gone on into the subtree: starting
-     * there, it tests the subtree's box, as it did from its parent, and then visits the same nodes
-     * in the same order, with the same hits. (Reshetov, Soupikov and Hurley's entry points for the
-     * rays of a frustum, "Multi-level ray tracing algorithm", SIGGRAPH 2005, made exact.)
+     * no such ray can reach a leaf: from the root down, as long as the volume wholly excludes one
+     * child's box ({@link HalfSpace#excludes}, a margin far above the slab test's rounding). Such
+     * a ray misses the excluded box, so from the root it would have tested both boxes of every
+     * node above the subtree, stacked nothing, and gone on into the subtree: starting there, it
+     * tests the subtree's box, as it did from its parent, and then visits the same nodes in the
+     * same order, with the same hits. (Reshetov, Soupikov and Hurley's entry points for the rays
+     * of a frustum, "Multi-level ray tracing algorithm", SIGGRAPH 2005, made exact.)
      */
     Start startFor(List<HalfSpace> volume) {
         if (excluded(rootBox, 0, volume)) {
@@ -75,18 +75,13 @@ public final class FlatBVH {
         Start start = root;
         while (start.count() == 0) {
             int node = start.link();
-            int seen = -1;
-            int lanes = 0;
-            for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
-                if (nodes.primitiveCount(node, lane) != WideNodes.EMPTY && !excluded(nodes.box(node, lane), 0, volume)) {
-                    seen = lane;
-                    lanes++;
-                }
+            boolean left = !excluded(nodes.bounds, BvhNodes.boxAt(node, BvhNodes.LEFT), volume);
+            boolean right = !excluded(nodes.bounds, BvhNodes.boxAt(node, BvhNodes.RIGHT), volume);
+            if (left == right) {
+                return left ? start : null;
             }
-            if (lanes != 1) {
-                return lanes > 1 ? start : null;
-            }
-            start = new Start(nodes.box(node, seen), 0, nodes.link(node, seen), nodes.primitiveCount(node, seen));
+            int side = left ? BvhNodes.LEFT : BvhNodes.RIGHT;
+            start = new Start(nodes.bounds, BvhNodes.boxAt(node, side), nodes.link(node, side), nodes.primitiveCount(node, side));
         }
         return start;
     }
@@ -101,18 +96,9 @@ public final class FlatBVH {
         return false;
     }
 
-    /** All nodes, leaves included. */
+    /** All nodes, leaves included (a binary tree has one leaf more than interior nodes). */
     public int nodeCount() {
-        if (rootCount > 0) {
-            return 1;
-        }
-        int leaves = 0;
-        for (int node = 0; node < nodes.count(); node++) {
-            for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
-                leaves += nodes.primitiveCount(node, lane) > 0 ? 1 : 0;
-            }
-        }
-        return nodes.count() + leaves;
+        return 2 * nodes.count() + 1;
     }
 
     public int primitiveCount() {
@@ -144,11 +130,9 @@ public final class FlatBVH {
 
     private int depthBelow(int node) {
         int deepest = 0;
-        for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
-            int count = nodes.primitiveCount(node, lane);
-            if (count != WideNodes.EMPTY) {
-                deepest = Math.max(deepest, count > 0 ? 1 : 1 + depthBelow(nodes.link(node, lane)));
-            }
+        for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
+            boolean leaf = nodes.primitiveCount(node, side) > 0;
+            deepest = Math.max(deepest, leaf ? 1 : 1 + depthBelow(nodes.link(node, side)));
         }
         return deepest;
     }
@@ -169,12 +153,12 @@ public final class FlatBVH {
     }
 
     /**
-     * The traversal of both searches. From a node, the boxes of its four lanes are tested in one
-     * loop ({@link SlabRay#entries}); the ray goes on into the child it enters first and stacks
-     * the others it enters, farthest first, until it reaches a leaf or misses every child, and
-     * then goes on with the subtree stacked last. The closest-hit search skips a stacked subtree
-     * that the ray enters beyond a hit found since; the any-hit search stops at the first leaf that
-     * blocks the ray.
+     * The traversal of both searches. From a node, both children's boxes are tested; the ray
+     * descends into one it enters and stacks the other if it enters both, until it reaches a leaf
+     * or misses both children, and then goes on with the subtree stacked last. For the closest
+     * hit it descends into the child it enters first and skips a stacked subtree that it enters
+     * beyond a hit found since; for any hit the order does not matter, and the first leaf that
+     * blocks the ray ends the search.
      */
     private boolean search(Start start, Ray ray, double tMax, ShadeRec sr, Leaves leaves, boolean closest) {
         TraversalStack.Frame stack = sr.scratch.traversals.push(ray);
@@ -182,7 +166,6 @@ public final class FlatBVH {
         int[] stackLinks = stack.links;
         int[] stackCounts = stack.counts;
         double[] stackEntries = stack.entries;
-        long[] keys = stack.keys;
         float[] bounds = nodes.bounds;
         int[] children = nodes.children;
         double tHit = tMax;
@@ -203,50 +186,44 @@ public final class FlatBVH {
             }
             int link = stackLinks[top];
             int count = stackCounts[top];
-            // descend to a leaf, or until the ray misses every child
+            // descend to a leaf, or until the ray misses both children
             while (count == 0) {
-                boxTests += WideNodes.WIDTH;
-                // the lanes' entries with the lane in their lowest bits: a subtree is then skipped
-                // only when the ray enters it beyond the hit, as before (NodeTest)
-                TEST.keys(slab, bounds, WideNodes.boxesAt(link), Double.doubleToRawLongBits(tHit), keys);
-                long k0 = keys[0];
-                long k1 = keys[1];
-                long k2 = keys[2];
-                long k3 = keys[3];
-                // a sorting network of five exchanges, without branches (keys are at most
-                // +infinity's bits plus 3, so differences do not overflow)
-                long d = k0 - k1;
-                d &= d >> 63;
-                long a = k1 + d;
-                long b = k0 - d;
-                d = k2 - k3;
-                d &= d >> 63;
-                long c = k3 + d;
-                long e = k2 - d;
-                d = a - c;
-                d &= d >> 63;
-                long first = c + d;
-                a -= d;
-                d = b - e;
-                d &= d >> 63;
-                long last = b - d;
-                b = e + d;
-                d = a - b;
-                d &= d >> 63;
-                long second = b + d;
-                long third = a - d;
-                if (first >= MISS) {
+                // the node's links and counts are read before its boxes are tested, so that the
+                // two arrays are fetched together rather than one after the other
+                int at = BvhNodes.childAt(link, BvhNodes.LEFT);
+                int leftLink = children[at];
+                int leftCount = children[at + 1];
+                int rightLink = children[at + 2];
+                int rightCount = children[at + 3];
+                boxTests += 2;
+                double tLeft = slab.entry(bounds, BvhNodes.boxAt(link, BvhNodes.LEFT), tHit);
+                double tRight = slab.entry(bounds, BvhNodes.boxAt(link, BvhNodes.RIGHT), tHit);
+                boolean enterLeft = tLeft < Double.POSITIVE_INFINITY;
+                boolean enterRight = tRight < Double.POSITIVE_INFINITY;
+                if (enterLeft && enterRight) {
+                    // the closest hit goes first into the child the ray enters first, any hit into the left
+                    if (closest && tRight < tLeft) {
+                        stackLinks[top] = leftLink;
+                        stackCounts[top] = leftCount;
+                        stackEntries[top++] = tLeft;
+                        link = rightLink;
+                        count = rightCount;
+                    } else {
+                        stackLinks[top] = rightLink;
+                        stackCounts[top] = rightCount;
+                        stackEntries[top++] = tRight;
+                        link = leftLink;
+                        count = leftCount;
+                    }
+                } else if (enterLeft) {
+                    link = leftLink;
+                    count = leftCount;
+                } else if (enterRight) {
+                    link = rightLink;
+                    count = rightCount;
+                } else {
                     break;
                 }
-                // the ray goes on into the nearest; the others are stacked farthest first, each
-                // written and kept only if the ray enters it, without a branch
-                int at = WideNodes.linksAt(link);
-                top = push(last, at, children, stackLinks, stackCounts, stackEntries, top);
-                top = push(third, at, children, stackLinks, stackCounts, stackEntries, top);
-                top = push(second, at, children, stackLinks, stackCounts, stackEntries, top);
-                int lane = (int) first & 3;
-                link = children[at + lane];
-                count = children[at + WideNodes.WIDTH + lane];
             }
             if (count > 0) {
                 if (closest && leaves.hit(link, count, ray, sr)) {
@@ -261,17 +238,5 @@ public final class FlatBVH {
         sr.scratch.traversals.pop();
         sr.boxTests += boxTests;
         return found;
-    }
-
-    /** The key of a lane the ray misses, +infinity's bits: every lane's key from here up is a miss. */
-    private static final long MISS = Double.doubleToRawLongBits(Double.POSITIVE_INFINITY);
-
-    /** Writes the child whose key is {@code key} on top of the stack, and keeps it unless the ray misses it; returns the new top. */
-    private static int push(long key, int at, int[] children, int[] links, int[] counts, double[] entries, int top) {
-        int lane = (int) key & 3;
-        links[top] = children[at + lane];
-        counts[top] = children[at + WideNodes.WIDTH + lane];
-        entries[top] = Double.longBitsToDouble(key & ~3L);
-        return top + (int) ((key - MISS) >>> 63);
     }
 }

@@ -64,7 +64,7 @@ public final class MedianSplitBuilder {
      * one dependent random read a step, some ten times as slow as a copy).
      */
     public FlatBVH build(float[] boxes, int[] carried) {
-        return binary(boxes, carried).collapsed();
+        return binary(boxes, carried).flat();
     }
 
     /** The binary tree that {@link #build(float[], int[])} collapses into wide nodes. */

@@ -58,7 +58,7 @@ public final class SahBuilder {
      * indices), travels with the boxes into the leaf order, as in {@link MedianSplitBuilder#build(float[], int[])}.
      */
     public FlatBVH build(float[] boxes, int[] carried) {
-        return binary(boxes, carried).collapsed();
+        return binary(boxes, carried).flat();
     }
 
     /** The binary tree that {@link #build(float[], int[])} collapses into wide nodes. */

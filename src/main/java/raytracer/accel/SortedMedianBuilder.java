@@ -31,7 +31,7 @@ public final class SortedMedianBuilder {
 
     /** Builds over primitives whose boxes are the floats {@code boxes[6i .. 6i+6)}, rounded outward. */
     public FlatBVH build(float[] boxes) {
-        return binary(boxes).collapsed();
+        return binary(boxes).flat();
     }
 
     /** The binary tree that {@link #build(float[])} collapses into wide nodes. */

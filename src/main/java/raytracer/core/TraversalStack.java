@@ -11,25 +11,19 @@ import raytracer.math.SlabRay;
  * back with {@link #pop}; the frame below stays as its traversal left it.
  */
 public final class TraversalStack {
-    /** The deepest tree the builders produce. */
+    /** The deepest tree the builders produce: a traversal stacks at most one subtree per level. */
     public static final int MAX_DEPTH = 64;
-    /** Children of a node of the wide trees searched, and so of the entries one node's test yields. */
-    public static final int WIDTH = 4;
-    /** Subtrees a traversal may have stacked: all but one child per level, and the start. */
-    public static final int STACK_SIZE = (WIDTH - 1) * MAX_DEPTH + 1;
     /** BVHs searched one inside another at most this deep. */
     public static final int MAX_NESTING = 8;
 
     /**
      * One traversal's stack: entry i is a subtree (its link and primitive count, as the tree
-     * stores a child) and the distance at which the ray enters its box; and where one node's
-     * test puts what it found of its children.
+     * stores a child) and the distance at which the ray enters its box.
      */
     public static final class Frame {
-        public final int[] links = new int[STACK_SIZE];
-        public final int[] counts = new int[STACK_SIZE];
-        public final double[] entries = new double[STACK_SIZE];
-        public final long[] keys = new long[WIDTH];
+        public final int[] links = new int[MAX_DEPTH];
+        public final int[] counts = new int[MAX_DEPTH];
+        public final double[] entries = new double[MAX_DEPTH];
         public final SlabRay ray = new SlabRay();
     }
 

@@ -25,13 +25,6 @@ public final class SlabRay {
     private int nearX;
     private int nearY;
     private int nearZ;
-    /** Per axis, the offsets of the near and the far plane of a box in a group of four stored plane by plane ({@link #entryBits}). */
-    private int xNear;
-    private int xFar;
-    private int yNear;
-    private int yFar;
-    private int zNear;
-    private int zFar;
     /** True when 1/d is infinite on some axis: the test must then ignore the NaN of 0 * infinity. */
     private boolean parallel;
 
@@ -50,45 +43,9 @@ public final class SlabRay {
         nearX = invX < 0 ? 3 : 0;
         nearY = invY < 0 ? 3 : 0;
         nearZ = invZ < 0 ? 3 : 0;
-        xNear = 4 * nearX;
-        xFar = 12 - xNear;
-        yNear = 4 + 4 * nearY;
-        yFar = 20 - yNear;
-        zNear = 8 + 4 * nearZ;
-        zFar = 28 - zNear;
         parallel = !(Math.abs(farInvX) <= Double.MAX_VALUE && Math.abs(farInvY) <= Double.MAX_VALUE
                      && Math.abs(farInvZ) <= Double.MAX_VALUE);
         return this;
-    }
-
-    /** The origin's coordinate on axis 0, 1 or 2: what a test of several boxes at once ({@link #entryBits}'s arithmetic, lane by lane) reads. */
-    public double origin(int axis) {
-        return axis == 0 ? ox : axis == 1 ? oy : oz;
-    }
-
-    /** 1/d on the axis, for the near planes. */
-    public double inverse(int axis) {
-        return axis == 0 ? invX : axis == 1 ? invY : invZ;
-    }
-
-    /** 1/d widened, for the far planes. */
-    public double farInverse(int axis) {
-        return axis == 0 ? farInvX : axis == 1 ? farInvY : farInvZ;
-    }
-
-    /** The offset of the axis's near plane in a group of four boxes stored plane by plane ({@link #entryBits}). */
-    public int nearPlane(int axis) {
-        return axis == 0 ? xNear : axis == 1 ? yNear : zNear;
-    }
-
-    /** The offset of the axis's far plane, as {@link #nearPlane}. */
-    public int farPlane(int axis) {
-        return axis == 0 ? xFar : axis == 1 ? yFar : zFar;
-    }
-
-    /** True when 1/d is infinite on some axis, where a test must ignore the NaN of 0 * infinity ({@link #entryBits} does). */
-    public boolean parallel() {
-        return parallel;
     }
 
     /**
@@ -127,73 +84,6 @@ public final class SlabRay {
         double t0 = Double.longBitsToDouble(Math.max(Math.max(bits(tx0), bits(ty0)), Math.max(bits(tz0), 0L)));
         double t1 = Double.longBitsToDouble(Math.min(Math.min(bits(tx1), bits(ty1)), Math.min(bits(tz1), bits(tMax))));
         return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
-    }
-
-    /**
-     * {@link #entry} for one of four boxes stored plane by plane (a wide BVH node): its x0 at
-     * {@code boxes[at]}, y0 four floats on, then z0, x1, y1, z1, each four on. Returns the entry's
-     * bits, or +infinity's bits when the ray misses the box on (0, tMax), {@code tMaxBits} being
-     * tMax's bits. The same arithmetic as {@link #entry}, to the bit, without a branch that
-     * depends on the box: the extremes are taken on the bit patterns as longs with masks, since
-     * the JIT compiles Math.max(long) as a branch or a conditional move by how the program has
-     * called it so far, and a branch taken at random costs more than the whole test.
-     */
-    public long entryBits(float[] boxes, int at, long tMaxBits) {
-        // kept under the JIT's inlining limit for hot methods (325 bytes of bytecode): the rare
-        // case and the planes' offsets are elsewhere
-        if (parallel) {
-            return entryBitsIgnoringNaN(boxes, at, tMaxBits);
-        }
-        long tx0 = bits((boxes[at + xNear] - ox) * invX);
-        long tx1 = bits((boxes[at + xFar] - ox) * farInvX + 0.0);
-        long ty0 = bits((boxes[at + yNear] - oy) * invY);
-        long ty1 = bits((boxes[at + yFar] - oy) * farInvY + 0.0);
-        long tz0 = bits((boxes[at + zNear] - oz) * invZ);
-        long tz1 = bits((boxes[at + zFar] - oz) * farInvZ + 0.0);
-        // the largest entry clamped at 0: negative patterns made 0, then the largest of patterns
-        // at most +infinity's, whose differences cannot overflow
-        long t0 = maxOfNonNegative(maxOfNonNegative(atLeastZero(tx0), atLeastZero(ty0)), atLeastZero(tz0));
-        // the smallest exit: a negative one made -1, below every entry, so the box is missed
-        long t1 = minAboveMinusOne(minAboveMinusOne(negativeToMinusOne(tx1), negativeToMinusOne(ty1)),
-                                   minAboveMinusOne(negativeToMinusOne(tz1), tMaxBits));
-        // t1 < t0 as longs exactly when the doubles are (as in entry: no NaN, no -0.0 here)
-        long missed = (t1 - t0) >> 63;
-        return t0 & ~missed | INFINITY_BITS & missed;
-    }
-
-    private long entryBitsIgnoringNaN(float[] boxes, int at, long tMaxBits) {
-        double x0 = boxes[at + xNear];
-        double x1 = boxes[at + xFar];
-        double y0 = boxes[at + yNear];
-        double y1 = boxes[at + yFar];
-        double z0 = boxes[at + zNear];
-        double z1 = boxes[at + zFar];
-        return bits(overlapIgnoringNaN((x0 - ox) * invX, (x1 - ox) * farInvX + 0.0, (y0 - oy) * invY, (y1 - oy) * farInvY + 0.0,
-                                       (z0 - oz) * invZ, (z1 - oz) * farInvZ + 0.0, Double.longBitsToDouble(tMaxBits)));
-    }
-
-    private static final long INFINITY_BITS = Double.doubleToRawLongBits(Double.POSITIVE_INFINITY);
-
-    /** x, or 0 when x is negative. */
-    private static long atLeastZero(long x) {
-        return x & ~(x >> 63);
-    }
-
-    /** x, or -1 when x is negative. */
-    private static long negativeToMinusOne(long x) {
-        return x | x >> 63;
-    }
-
-    /** The larger of a and b, both in [0, 2^63 - 1), without a branch. */
-    private static long maxOfNonNegative(long a, long b) {
-        long d = a - b;
-        return a - (d & d >> 63);
-    }
-
-    /** The smaller of a and b, both in [-1, +infinity's bits], without a branch. */
-    private static long minAboveMinusOne(long a, long b) {
-        long d = a - b;
-        return b + (d & d >> 63);
     }
 
     private static long bits(double d) {

@@ -43,19 +43,16 @@ class BvhFileTest {
         FlatBVH bvh = new MedianSplitBuilder(8).build(MeshBVH.triangleBoxes(Icosphere.make(2)));
         assertTrue(bvh.nodes.count() > 1);
         ByteBuffer buffer = written(bvh);
-        // the first node's first child made a leaf running past the leaf order
+        // the first node's left child made a leaf running past the leaf order
         int at = 8 + 8 + 4 * bvh.nodes.bounds.length;
         buffer.putInt(at, bvh.order.length - 1);
-        buffer.putInt(at + 4 * WideNodes.WIDTH, 2);
+        buffer.putInt(at + 4, 2);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> BvhFile.read(buffer));
         assertTrue(e.getMessage().contains("outside"), e.getMessage());
-        // or an interior node linking back to its parent, a cycle
+        // or an interior node linking back to the root, a cycle a traversal would never leave
         ByteBuffer cycle = written(bvh);
-        int lane = 0;
-        while (bvh.nodes.primitiveCount(0, lane) != 0) {
-            lane++;
-        }
-        cycle.putInt(at + 4 * lane, 0);
+        assertEquals(0, bvh.nodes.primitiveCount(1, BvhNodes.LEFT), "node 1 has an interior left child");
+        cycle.putInt(at + 4 * BvhNodes.CHILDREN_PER_NODE, 0);
         e = assertThrows(IllegalArgumentException.class, () -> BvhFile.read(cycle));
         assertTrue(e.getMessage().contains("not a node after it"), e.getMessage());
         ByteBuffer bigEndian = ByteBuffer.allocate(64);

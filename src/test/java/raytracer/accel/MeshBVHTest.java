@@ -107,7 +107,7 @@ class MeshBVHTest {
         // every node's box contains its children's boxes, and every leaf's box its triangles' boxes
         double[] triangles = MeshBVH.triangleBounds(mesh);
         int leaves = checkContains(bvh, bvh.rootBox, 0, bvh.rootLink, bvh.rootCount, triangles);
-        assertEquals(bvh.nodeCount(), bvh.nodes.count() + leaves, "interior nodes and leaves");
+        assertEquals(bvh.nodeCount(), 2 * leaves - 1, "a binary tree has one leaf more than interior nodes");
     }
 
     /** Checks the subtree of a child (link, count) whose box is {@code box[at .. at + 6)}; returns its leaves. */
@@ -123,21 +123,16 @@ class MeshBVHTest {
             return 1;
         }
         int leaves = 0;
-        WideNodes nodes = bvh.nodes;
-        int lanes = 0;
-        for (int lane = 0; lane < WideNodes.WIDTH; lane++) {
-            if (nodes.primitiveCount(link, lane) == WideNodes.EMPTY) {
-                continue;
-            }
-            assertEquals(lanes++, lane, "the lanes in use come first");
-            float[] child = nodes.box(link, lane);
+        BvhNodes nodes = bvh.nodes;
+        for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
+            int child = BvhNodes.boxAt(link, side);
             for (int k = 0; k < 3; k++) {
-                assertTrue(box[at + k] <= child[k]);
-                assertTrue(box[at + 3 + k] >= child[3 + k]);
+                assertTrue(box[at + k] <= nodes.bounds[child + k]);
+                assertTrue(box[at + 3 + k] >= nodes.bounds[child + 3 + k]);
             }
-            leaves += checkContains(bvh, child, 0, nodes.link(link, lane), nodes.primitiveCount(link, lane), triangles);
+            leaves += checkContains(bvh, nodes.bounds, child, nodes.link(link, side), nodes.primitiveCount(link, side),
+                                    triangles);
         }
-        assertTrue(lanes >= 2, "a node has two children at least");
         return leaves;
     }
 

@@ -43,7 +43,7 @@ class SahBuilderTest {
         }
         BinaryTree serial = new SahBuilder(4, Integer.MAX_VALUE).binary(same.clone(), null);
         assertSameTree(serial, new SahBuilder(4, 100).binary(same.clone(), null));
-        assertTrue(serial.collapsed().depth() < FlatBVH.MAX_DEPTH, "equal boxes are halved, not peeled one by one");
+        assertTrue(serial.flat().depth() < FlatBVH.MAX_DEPTH, "equal boxes are halved, not peeled one by one");
     }
 
     @Test
