@@ -9,10 +9,10 @@ import raytracer.io.obj.ObjLoader;
 import raytracer.shapes.mesh.Mesh;
 
 /**
- * The builders side by side on a mesh (tools/bench/bvh-study.md): build time, binary tree and its
- * collapse into wide nodes included (the median of several builds after the first, on the common
- * pool), and the expected tests per ray by the surface area heuristic ({@link SahCost}) of the
- * binary tree and of the wide one.
+ * The builders side by side on a mesh (tools/bench/bvh-study.md): build time, the packing of the
+ * nodes included (the median of several builds after the first, on the common pool), and the
+ * expected tests per ray by the surface area heuristic ({@link SahCost}) of the tree as built and
+ * as packed (the same tree: a check).
  *
  * <pre>
  *   java -cp build/classes/java/main:build/classes/java/jmh:build/libs/render.jar raytracer.accel.BvhStudy \
@@ -38,21 +38,21 @@ public final class BvhStudy {
         for (String name : names) {
             long[] times = new long[rounds];
             BinaryTree binary = null;
-            FlatBVH wide = null;
+            FlatBVH flat = null;
             for (int r = 0; r < rounds; r++) {
                 long start = now();
                 binary = build(name, mesh);
-                wide = binary.flat();
+                flat = binary.flat();
                 times[r] = now() - start;
             }
             long first = times[0];
             Arrays.sort(times, 1, rounds);
             SahCost b = SahCost.of(binary);
-            SahCost w = SahCost.of(wide);
+            SahCost w = SahCost.of(flat);
             System.out.printf(Locale.ROOT, "%-14s build %.3f s (median of %d after the first, %.3f s); depth %d; "
-                              + "binary: box %.1f, primitive %.2f, cost %.2f; wide (%d nodes): box %.1f, primitive %.2f, cost %.2f%n",
-                              name, times[1 + (rounds - 1) / 2] / 1e9, rounds - 1, first / 1e9, wide.depth(),
-                              b.boxTests(), b.primitiveTests(), b.cost(), wide.nodeCount(), w.boxTests(), w.primitiveTests(), w.cost());
+                              + "binary: box %.1f, primitive %.2f, cost %.2f; flat (%d nodes): box %.1f, primitive %.2f, cost %.2f%n",
+                              name, times[1 + (rounds - 1) / 2] / 1e9, rounds - 1, first / 1e9, flat.depth(),
+                              b.boxTests(), b.primitiveTests(), b.cost(), flat.nodeCount(), w.boxTests(), w.primitiveTests(), w.cost());
         }
     }
 

@@ -79,47 +79,6 @@ final class FloatBoxes {
         out[at + 5] = z1;
     }
 
-    /** The box of the centroid keys ({@link #centroidKey}) of boxes from .. to - 1, written to {@code out[at .. at + 6)}. */
-    static void centroidBox(float[] boxes, int from, int to, float[] out, int at) {
-        float x0 = Float.POSITIVE_INFINITY;
-        float y0 = Float.POSITIVE_INFINITY;
-        float z0 = Float.POSITIVE_INFINITY;
-        float x1 = Float.NEGATIVE_INFINITY;
-        float y1 = Float.NEGATIVE_INFINITY;
-        float z1 = Float.NEGATIVE_INFINITY;
-        for (int p = 6 * from; p < 6 * to; p += 6) {
-            float x = boxes[p] + boxes[p + 3];
-            float y = boxes[p + 1] + boxes[p + 4];
-            float z = boxes[p + 2] + boxes[p + 5];
-            x0 = x < x0 ? x : x0;
-            x1 = x > x1 ? x : x1;
-            y0 = y < y0 ? y : y0;
-            y1 = y > y1 ? y : y1;
-            z0 = z < z0 ? z : z0;
-            z1 = z > z1 ? z : z1;
-        }
-        out[at] = x0;
-        out[at + 1] = y0;
-        out[at + 2] = z0;
-        out[at + 3] = x1;
-        out[at + 4] = y1;
-        out[at + 5] = z1;
-    }
-
-    /** Grows the box {@code out[0 .. 6)} of centroid keys by box i's. */
-    static void growCentroidBox(float[] boxes, int i, float[] out) {
-        int p = 6 * i;
-        float x = boxes[p] + boxes[p + 3];
-        float y = boxes[p + 1] + boxes[p + 4];
-        float z = boxes[p + 2] + boxes[p + 5];
-        out[0] = x < out[0] ? x : out[0];
-        out[1] = y < out[1] ? y : out[1];
-        out[2] = z < out[2] ? z : out[2];
-        out[3] = x > out[3] ? x : out[3];
-        out[4] = y > out[4] ? y : out[4];
-        out[5] = z > out[5] ? z : out[5];
-    }
-
     /** The axis (0, 1, 2) along which the box at {@code box[at .. at + 6)} is longest; ties go to the first. */
     static int longestAxis(float[] box, int at) {
         float ex = box[at + 3] - box[at];

@@ -1,23 +1,26 @@
 package raytracer.accel;
 
-import java.util.Arrays;
-
 /**
- * The bins of a binned SAH build (Wald, "On fast construction of SAH-based bounding volume
- * hierarchies", 2007; pbrt-v4 section 7.3.2), one set per builder task: a node's primitives are
- * dropped by centroid into equal slices of its centroids' extent along the axis where they spread
- * most, each bin keeping its count and the union of its boxes; a sweep over the bins then finds
- * the plane between two bins of least cost N_L A_L + N_R A_R (A the half surface area).
- * Centroids are the builders' keys ({@link FloatBoxes#centroidKey}, twice the centroid), so a
- * primitive's bin is computed the same way, from the same floats, when it is binned and when it is
- * partitioned ({@link #bin}).
+ * The bins of one node in a binned SAH build (Wald, "On fast construction of SAH-based bounding
+ * volume hierarchies", 2007; pbrt-v4 section 7.3.2): the node's primitives are dropped by
+ * centroid into equal slices of its box along the box's longest axis, each bin keeping its count
+ * and the union of its boxes; a sweep over the bins then finds the plane between two bins of
+ * least cost N_L A_L + N_R A_R (A the half surface area). Centroids are the builders' keys
+ * ({@link FloatBoxes#centroidKey}, twice the centroid), so a primitive's bin is computed the same
+ * way, from the same floats, when it is binned and when it is partitioned ({@link #bin}).
+ *
+ * <p>The slices divide the node's box rather than the box of its centroids (pbrt-v4, Wald), which
+ * is known only after a pass over the primitives: so a node's partition can bin each primitive
+ * for the child it goes to as it places it, and a level of the tree costs one pass over its
+ * primitives instead of two. The dragon's tree costs 1.5% more by the SAH for it, the bunny's the
+ * same; the build takes a third less time (tools/bench/bvh-study.md).
  */
 final class SahBins {
     /**
      * Bins for a node of at least as many primitives (a smaller node has one per primitive):
      * pbrt-v4 uses 12, Wald 16 to 32. On the dragon 12, 16 and 32 gave trees within 1% of one
      * another by SAH cost (31.6, 31.4, 31.2). One axis, as pbrt-v4: binning all three made trees
-     * 3% cheaper (27.6 against 28.4, leaves split while the SAH says so) for 1.8 times the build.
+     * 3% cheaper for 1.8 times the build.
      */
     static final int BINS = 16;
 
@@ -27,32 +30,20 @@ final class SahBins {
     private final int[] rightCounts = new int[BINS];
     /** A box being grown by the sweep. */
     private final float[] acc = new float[6];
-    /** The last {@link #fill}'s axis, bins, where its centroids start and its bins per unit of key. */
+    /** What {@link #prepare} set: the axis, the bins in use, the key where bin 0 starts and the bins per unit of key. */
     private int axis;
     private int used;
     private float low;
     private float scale;
-    /** The best plane of the last {@link #sweep}: after bin {@link #bestBin}, at cost {@link #bestCost}. */
+    /** The best plane of the last {@link #sweep}: after bin {@link #bestBin}, with {@link #leftCount} primitives before it. */
     int bestBin;
-    double bestCost;
+    int leftCount;
 
     /** The bin of a centroid key, binned from {@code low} at {@code scale} bins per unit, of bins 0 .. last. */
     static int bin(float key, float low, float scale, int last) {
-        // key - low >= 0 exactly (low is the least key); the product may reach the bin count at
+        // key - low >= 0 exactly (no key is below low); the product may reach the bin count at
         // the top, and (int) of it is clamped here
         return Math.min((int) ((key - low) * scale), last);
-    }
-
-    int axis() {
-        return axis;
-    }
-
-    float low() {
-        return low;
-    }
-
-    float scale() {
-        return scale;
     }
 
     int lastBin() {
@@ -60,49 +51,54 @@ final class SahBins {
     }
 
     /**
-     * Bins primitives from .. to - 1 of {@code prims} (boxes, six floats each) whose centroid keys
-     * lie in the box {@code centroids[at .. at + 6)}; false, and nothing binned, when the keys
-     * do not spread on any axis.
+     * Empties the bins for a node of {@code count} primitives in the box {@code box[at .. at + 6)};
+     * false when the box has no extent along its longest axis, so nothing can be binned.
      */
-    boolean fill(float[] prims, int from, int to, float[] centroids, int at) {
-        axis = FloatBoxes.longestAxis(centroids, at);
-        used = Math.min(BINS, Math.max(2, to - from));
-        low = centroids[at + axis];
-        float extent = centroids[at + 3 + axis] - low;
-        if (!(extent > 0)) {
-            return false;
-        }
+    boolean prepare(float[] box, int at, int count) {
+        axis = FloatBoxes.longestAxis(box, at);
+        used = Math.min(BINS, Math.max(2, count));
+        // a primitive in the box has a key lo + hi within twice the box's planes, exactly
+        low = 2 * box[at + axis];
+        float extent = 2 * box[at + 3 + axis] - low;
         // slightly fewer bins than `used` per extent, so that the top key falls in the last bin rather than past it
         scale = used * 0.99999f / extent;
-        Arrays.fill(counts, 0, used, 0);
         for (int b = 0; b < used; b++) {
+            counts[b] = 0;
             empty(boxes, 6 * b);
         }
-        int last = used - 1;
-        for (int p = 6 * from; p < 6 * to; p += 6) {
-            int b = bin(prims[p + axis] + prims[p + 3 + axis], low, scale, last);
-            counts[b]++;
-            int q = 6 * b;
-            // comparisons rather than Math.min/max, as in FloatBoxes.union
-            float v = prims[p];
-            boxes[q] = v < boxes[q] ? v : boxes[q];
-            v = prims[p + 1];
-            boxes[q + 1] = v < boxes[q + 1] ? v : boxes[q + 1];
-            v = prims[p + 2];
-            boxes[q + 2] = v < boxes[q + 2] ? v : boxes[q + 2];
-            v = prims[p + 3];
-            boxes[q + 3] = v > boxes[q + 3] ? v : boxes[q + 3];
-            v = prims[p + 4];
-            boxes[q + 4] = v > boxes[q + 4] ? v : boxes[q + 4];
-            v = prims[p + 5];
-            boxes[q + 5] = v > boxes[q + 5] ? v : boxes[q + 5];
-        }
-        return true;
+        return extent > 0;
     }
 
-    /** Finds the cheapest plane between the bins of the last {@link #fill}; false when every primitive fell in one bin. Ties go to the lower bin. */
+    /** Bins primitives from .. to - 1 of {@code prims} (boxes, six floats each). */
+    void fill(float[] prims, int from, int to) {
+        for (int q = 6 * from; q < 6 * to; q += 6) {
+            add(prims, q);
+        }
+    }
+
+    /** Drops the primitive whose box is {@code prims[q .. q + 6)} into its bin. */
+    private void add(float[] prims, int q) {
+        int b = bin(prims[q + axis] + prims[q + 3 + axis], low, scale, used - 1);
+        counts[b]++;
+        int r = 6 * b;
+        // comparisons rather than Math.min/max, as in FloatBoxes.union
+        float v = prims[q];
+        boxes[r] = v < boxes[r] ? v : boxes[r];
+        v = prims[q + 1];
+        boxes[r + 1] = v < boxes[r + 1] ? v : boxes[r + 1];
+        v = prims[q + 2];
+        boxes[r + 2] = v < boxes[r + 2] ? v : boxes[r + 2];
+        v = prims[q + 3];
+        boxes[r + 3] = v > boxes[r + 3] ? v : boxes[r + 3];
+        v = prims[q + 4];
+        boxes[r + 4] = v > boxes[r + 4] ? v : boxes[r + 4];
+        v = prims[q + 5];
+        boxes[r + 5] = v > boxes[r + 5] ? v : boxes[r + 5];
+    }
+
+    /** Finds the cheapest plane between the bins; false when every primitive fell in one bin. Ties go to the lower bin. */
     boolean sweep() {
-        bestCost = Double.POSITIVE_INFINITY;
+        double bestCost = Double.POSITIVE_INFINITY;
         bestBin = -1;
         // from the right: the area and count right of each plane
         empty(acc, 0);
@@ -129,6 +125,7 @@ final class SahBins {
             if (cost < bestCost) {
                 bestCost = cost;
                 bestBin = b;
+                leftCount = left;
             }
         }
         return bestBin >= 0;
@@ -145,9 +142,46 @@ final class SahBins {
         System.arraycopy(acc, 0, out, at, 6);
     }
 
+    /**
+     * Moves primitives from .. to - 1 whose centroids fall in bins up to {@link #bestBin} before the
+     * others, their boxes, ids and carried ints together ({@link BoxSelect#swap}), and returns where
+     * the others start. Each primitive is binned for its part as its place is settled, into
+     * {@code left} or {@code right} (prepared for the children; null: not binned).
+     */
+    int partition(float[] p, int[] ids, int[] carried, int from, int to, SahBins left, SahBins right) {
+        int last = used - 1;
+        int i = from;
+        int j = to - 1;
+        for (;;) {
+            // past the primitives at the front that stay there
+            while (i <= j && bin(p[6 * i + axis] + p[6 * i + 3 + axis], low, scale, last) <= bestBin) {
+                if (left != null) {
+                    left.add(p, 6 * i);
+                }
+                i++;
+            }
+            // and past those at the back
+            while (i <= j && bin(p[6 * j + axis] + p[6 * j + 3 + axis], low, scale, last) > bestBin) {
+                if (right != null) {
+                    right.add(p, 6 * j);
+                }
+                j--;
+            }
+            if (i >= j) {
+                return i;
+            }
+            // each in the other's part: exchanged, both are binned on the next scans
+            BoxSelect.swap(p, ids, carried, i, j);
+        }
+    }
+
     private static void empty(float[] box, int at) {
-        Arrays.fill(box, at, at + 3, Float.POSITIVE_INFINITY);
-        Arrays.fill(box, at + 3, at + 6, Float.NEGATIVE_INFINITY);
+        box[at] = Float.POSITIVE_INFINITY;
+        box[at + 1] = Float.POSITIVE_INFINITY;
+        box[at + 2] = Float.POSITIVE_INFINITY;
+        box[at + 3] = Float.NEGATIVE_INFINITY;
+        box[at + 4] = Float.NEGATIVE_INFINITY;
+        box[at + 5] = Float.NEGATIVE_INFINITY;
     }
 
     private void grow(int q) {

@@ -64,20 +64,21 @@ class SahBuilderTest {
 
     /**
      * The root's two children split the primitives where N_L A_L + N_R A_R is least among the
-     * planes between bins along the axis of the centroids' largest extent, each side's box the
-     * union of its primitives' boxes: recomputed over the primitives themselves.
+     * planes between bins, equal slices of the root's box along its longest axis, each side's box
+     * the union of its primitives' boxes: recomputed over the primitives themselves.
      */
     @Test
     void theRootSplitIsTheCheapestPlaneBetweenBins() {
         float[] boxes = MeshBVH.triangleBoxes(MeshBVHTest.soup(10_000, 5));
         BinaryTree tree = new SahBuilder(4).binary(boxes.clone(), null);
         int n = boxes.length / 6;
-        float[] centroids = new float[6];
-        FloatBoxes.centroidBox(boxes, 0, n, centroids, 0);
-        int axis = FloatBoxes.longestAxis(centroids, 0);
-        float lo = centroids[axis];
-        // the builder's bins: the same float arithmetic (SahBins.bin) decides where a centroid falls
-        float scale = SahBins.BINS * 0.99999f / (centroids[3 + axis] - lo);
+        float[] box = new float[6];
+        FloatBoxes.union(boxes, 0, n, box, 0);
+        int axis = FloatBoxes.longestAxis(box, 0);
+        // the builder's bins, slices of the root's box along its longest axis, in centroid keys
+        // (twice the centroid); the same float arithmetic (SahBins.bin) decides where a centroid falls
+        float lo = 2 * box[axis];
+        float scale = SahBins.BINS * 0.99999f / (2 * box[3 + axis] - lo);
         double best = Double.POSITIVE_INFINITY;
         int bestPlane = -1;
         for (int plane = 1; plane < SahBins.BINS; plane++) {
