@@ -66,6 +66,9 @@ public final class BvhStudy {
         if (name.startsWith("median")) {
             return new MedianSplitBuilder(leaf, threshold).binary(MeshBVH.triangleBoxes(mesh), mesh.triangles().clone());
         }
+        if (name.startsWith("nocarry-sah")) {
+            return new SahBuilder(leaf, threshold).binary(MeshBVH.triangleBoxes(mesh), null);
+        }
         if (name.startsWith("sah")) {
             return new SahBuilder(leaf, threshold).binary(MeshBVH.triangleBoxes(mesh), mesh.triangles().clone());
         }

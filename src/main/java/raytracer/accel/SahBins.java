@@ -81,19 +81,32 @@ final class SahBins {
         int b = bin(prims[q + axis] + prims[q + 3 + axis], low, scale, used - 1);
         counts[b]++;
         int r = 6 * b;
-        // comparisons rather than Math.min/max, as in FloatBoxes.union
+        // a bin's box rarely grows once it holds a few boxes: a store only when it does, so that
+        // consecutive boxes in one bin do not wait on each other's stores
         float v = prims[q];
-        boxes[r] = v < boxes[r] ? v : boxes[r];
+        if (v < boxes[r]) {
+            boxes[r] = v;
+        }
         v = prims[q + 1];
-        boxes[r + 1] = v < boxes[r + 1] ? v : boxes[r + 1];
+        if (v < boxes[r + 1]) {
+            boxes[r + 1] = v;
+        }
         v = prims[q + 2];
-        boxes[r + 2] = v < boxes[r + 2] ? v : boxes[r + 2];
+        if (v < boxes[r + 2]) {
+            boxes[r + 2] = v;
+        }
         v = prims[q + 3];
-        boxes[r + 3] = v > boxes[r + 3] ? v : boxes[r + 3];
+        if (v > boxes[r + 3]) {
+            boxes[r + 3] = v;
+        }
         v = prims[q + 4];
-        boxes[r + 4] = v > boxes[r + 4] ? v : boxes[r + 4];
+        if (v > boxes[r + 4]) {
+            boxes[r + 4] = v;
+        }
         v = prims[q + 5];
-        boxes[r + 5] = v > boxes[r + 5] ? v : boxes[r + 5];
+        if (v > boxes[r + 5]) {
+            boxes[r + 5] = v;
+        }
     }
 
     /** Finds the cheapest plane between the bins; false when every primitive fell in one bin. Ties go to the lower bin. */
