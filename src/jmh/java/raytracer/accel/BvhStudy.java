@@ -9,7 +9,7 @@ import raytracer.io.obj.ObjLoader;
 import raytracer.shapes.mesh.Mesh;
 
 /**
- * The builders side by side on a mesh (tools/bench/bvh-study.md): build time, the packing of the
+ * The builders side by side on a mesh (tools/studies/bvh/README.md): build time, the packing of the
  * nodes included (the median of several builds after the first, on the common pool), and the
  * expected tests per ray by the surface area heuristic ({@link SahCost}) of the tree as built and
  * as packed (the same tree: a check).

@@ -67,7 +67,7 @@ public final class MedianSplitBuilder {
         return binary(boxes, carried).flat();
     }
 
-    /** The binary tree that {@link #build(float[], int[])} collapses into wide nodes. */
+    /** The binary tree that {@link #build(float[], int[])} flattens: the same nodes, numbered depth-first. */
     BinaryTree binary(float[] boxes, int[] carried) {
         int n = boxes.length / 6;
         if (n == 0) {

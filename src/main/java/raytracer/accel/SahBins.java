@@ -9,11 +9,12 @@ package raytracer.accel;
  * ({@link FloatBoxes#centroidKey}, twice the centroid), so a primitive's bin is computed the same
  * way, from the same floats, when it is binned and when it is partitioned ({@link #bin}).
  *
- * <p>The slices divide the node's box rather than the box of its centroids (pbrt-v4, Wald), which
- * is known only after a pass over the primitives: so a node's partition can bin each primitive
- * for the child it goes to as it places it, and a level of the tree costs one pass over its
- * primitives instead of two. The dragon's tree costs 1.5% more by the SAH for it, the bunny's the
- * same; the build takes a third less time (tools/bench/bvh-study.md).
+ * <p>The slices divide the node's box, not the box of its centroids as in pbrt-v4 and Wald's paper:
+ * that one is known only after a pass over the primitives, the node's box before it, so a node's
+ * partition can bin each primitive for the child it goes to as it places it, and a level of the
+ * tree costs one pass over its primitives instead of two. The dragon's tree costs 1.5% more by the
+ * SAH for it, the bunny's the same; the build takes about a tenth less time
+ * (tools/studies/bvh/README.md).
  */
 final class SahBins {
     /**

@@ -5,17 +5,17 @@ import java.util.concurrent.RecursiveAction;
 /**
  * A BVH built by the binned surface area heuristic (Wald, "On fast construction of SAH-based
  * bounding volume hierarchies", 2007; pbrt-v4 section 7.3.2): a node's primitives are binned by
- * centroid along the axis where the centroids spread most ({@link SahBins}) and split at the
+ * centroid along the longest axis of the node's box ({@link SahBins}) and split at the
  * plane between bins where N_L A_L + N_R A_R is least, A the surface area of a side's box. A node
  * of at most {@code maxLeafSize} primitives is a leaf. pbrt-v4 splits such a node further when
  * the heuristic expects that to pay (a node visit costing half a primitive test); here that made
  * leaves of 1.3 triangles on average, twice the nodes, and the dragon's rays 10% slower
- * (tools/bench/bvh-study.md): a visit of a binary node costs this traversal more than that.
+ * (tools/studies/bvh/README.md): a visit of a binary node costs this traversal more than that.
  *
  * <p>Built as the median builder is: the primitives' boxes are outward-rounded floats that move
  * with their ids (and a mesh's vertex indices) through the partitions, so every pass reads one run
- * of memory; the children's boxes come from the bins and their centroid boxes from the partition,
- * so a node costs two passes over its primitives. A subtree over c primitives has at most c - 1
+ * of memory; the children's boxes come from the bins, and the partition bins each primitive for
+ * the child it goes to, so a level of the tree costs one pass over its primitives. A subtree over c primitives has at most c - 1
  * interior nodes, so it is given that many numbers before it is built: its left child's subtree
  * the c_L - 1 after its own, its right child's the rest. Subtrees above a threshold are thus
  * built in parallel, on the caller's fork/join pool, into the same numbers as a serial build;

@@ -34,7 +34,7 @@ public final class SortedMedianBuilder {
         return binary(boxes).flat();
     }
 
-    /** The binary tree that {@link #build(float[])} collapses into wide nodes. */
+    /** The binary tree that {@link #build(float[])} flattens: the same nodes, numbered depth-first. */
     BinaryTree binary(float[] boxes) {
         int n = boxes.length / 6;
         if (n == 0) {
