@@ -47,7 +47,7 @@ final class MeshReader {
     static final int SAH_MAX_LEAF_SIZE = 4;
     /**
      * The builder of a mesh without a {@code bvh} key: the SAH tree renders the dragon and bunny
-     * frames 10-15% faster than the median tree, and its build, about 1.3 times as long, is won back
+     * frames 13-14% faster than the median tree, and its build, 1.3-1.4 times as long, is won back
      * within the first render, so the whole run is shorter too (tools/studies/bvh/README.md).
      */
     static final String DEFAULT_BUILDER = "sah";
