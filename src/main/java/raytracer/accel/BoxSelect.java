@@ -124,7 +124,8 @@ final class BoxSelect {
         return keyA < keyB | (keyA == keyB & idA < idB);
     }
 
-    private static void swap(float[] boxes, int[] ids, int[] carried, int a, int b) {
+    /** Exchanges the primitives at positions a and b: boxes, ids and carried ints. */
+    static void swap(float[] boxes, int[] ids, int[] carried, int a, int b) {
         int id = ids[a];
         ids[a] = ids[b];
         ids[b] = id;

@@ -19,11 +19,13 @@ import java.nio.ByteOrder;
  *
  * <p><b>Whoever changes the layout of {@link BvhNodes} or {@link FlatBVH} (what an array holds,
  * their order, a new field) must change it here and add 1 to {@link #VERSION}</b>: a cache written
- * by another version is then rebuilt rather than misread.
+ * by another version is then rebuilt rather than misread. Version 3 keeps version 2's layout: it
+ * came with the parallel binned SAH builder, so that trees the serial SAH builder cached are built
+ * again.
  */
 public final class BvhFile {
     /** The layout above; the mesh cache keys its files by it. */
-    public static final int VERSION = 2;
+    public static final int VERSION = 3;
 
     /** Where the bytes go: little-endian values, arrays in bulk. */
     public interface Sink {
@@ -107,11 +109,10 @@ public final class BvhFile {
         int rootLink = in.getInt();
         int rootCount = in.getInt();
         checkChild(rootLink, rootCount, count, primitives);
-        for (int node = 0; node < count; node++) {
-            for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
-                checkChild(nodes.link(node, side), nodes.primitiveCount(node, side), count, primitives);
-            }
+        if (rootCount == 0 && rootLink != 0) {
+            throw new IllegalArgumentException("a BVH's root is node 0, not " + rootLink);
         }
+        checkNodes(nodes, primitives);
         return new FlatBVH(nodes, order, primitives, rootBox, rootLink, rootCount);
     }
 
@@ -160,6 +161,30 @@ public final class BvhFile {
                 return in.remaining();
             }
         };
+    }
+
+    /**
+     * Every child is a leaf within the leaf order or a node after its parent (the depth-first
+     * numbering, so the links make no cycle) at most {@link FlatBVH#MAX_DEPTH} deep: no traversal
+     * leaves the arrays, loops, or outgrows its stack.
+     */
+    private static void checkNodes(BvhNodes nodes, int primitives) {
+        int count = nodes.count();
+        int[] depth = new int[count];
+        for (int node = 0; node < count; node++) {
+            for (int side = BvhNodes.LEFT; side <= BvhNodes.RIGHT; side++) {
+                int link = nodes.link(node, side);
+                int children = nodes.primitiveCount(node, side);
+                checkChild(link, children, count, primitives);
+                if (children == 0) {
+                    if (link <= node || depth[node] + 1 >= FlatBVH.MAX_DEPTH) {
+                        throw new IllegalArgumentException("node " + node + " links to node " + link
+                                                           + ", not a node after it within " + FlatBVH.MAX_DEPTH + " levels");
+                    }
+                    depth[link] = depth[node] + 1;
+                }
+            }
+        }
     }
 
     /** An interior child links to a node; a leaf to a run of the leaf order. */

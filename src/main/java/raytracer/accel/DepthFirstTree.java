@@ -46,7 +46,7 @@ final class DepthFirstTree {
      * The tree in the layout of {@link BvhNodes}, its leaves listing their primitives in
      * {@code order}; boxes are rounded outward to floats.
      */
-    FlatBVH flatten(int[] order) {
+    BinaryTree flatten(int[] order) {
         // the interior nodes, numbered in the same depth-first order
         int[] interiorNumber = new int[size];
         int interior = 0;
@@ -72,6 +72,6 @@ final class DepthFirstTree {
         }
         float[] rootBox = Arrays.copyOf(floats, 6);
         boolean rootIsLeaf = counts[0] > 0;
-        return new FlatBVH(nodes, order, rootBox, rootIsLeaf ? links[0] : 0, rootIsLeaf ? counts[0] : 0);
+        return new BinaryTree(nodes, order, rootBox, rootIsLeaf ? links[0] : 0, rootIsLeaf ? counts[0] : 0);
     }
 }

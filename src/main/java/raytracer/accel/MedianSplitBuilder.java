@@ -64,6 +64,11 @@ public final class MedianSplitBuilder {
      * one dependent random read a step, some ten times as slow as a copy).
      */
     public FlatBVH build(float[] boxes, int[] carried) {
+        return binary(boxes, carried).flat();
+    }
+
+    /** The binary tree that {@link #build(float[], int[])} flattens: the same nodes, numbered depth-first. */
+    BinaryTree binary(float[] boxes, int[] carried) {
         int n = boxes.length / 6;
         if (n == 0) {
             throw new IllegalArgumentException("a BVH needs at least one primitive");
@@ -78,7 +83,7 @@ public final class MedianSplitBuilder {
         float[] rootBox = new float[6];
         FloatBoxes.union(boxes, 0, n, rootBox, 0);
         if (n <= leafSize) {
-            return new FlatBVH(new BvhNodes(0), order, rootBox, 0, n);
+            return new BinaryTree(new BvhNodes(0), order, rootBox, 0, n);
         }
         Map<Integer, Integer> sizes = new HashMap<>();
         Build build = new Build(boxes, order, carried, new BvhNodes(interiorNodes(n, sizes)), sizes);
@@ -88,7 +93,7 @@ public final class MedianSplitBuilder {
         } else {
             job.compute();
         }
-        return new FlatBVH(build.nodes, order, rootBox, 0, 0);
+        return new BinaryTree(build.nodes, order, rootBox, 0, 0);
     }
 
     /**

@@ -31,6 +31,11 @@ public final class SortedMedianBuilder {
 
     /** Builds over primitives whose boxes are the floats {@code boxes[6i .. 6i+6)}, rounded outward. */
     public FlatBVH build(float[] boxes) {
+        return binary(boxes).flat();
+    }
+
+    /** The binary tree that {@link #build(float[])} flattens: the same nodes, numbered depth-first. */
+    BinaryTree binary(float[] boxes) {
         int n = boxes.length / 6;
         if (n == 0) {
             throw new IllegalArgumentException("a BVH needs at least one primitive");

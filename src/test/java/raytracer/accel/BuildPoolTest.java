@@ -7,10 +7,11 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.SplittableRandom;
 import java.util.concurrent.ForkJoinPool;
+import java.util.function.ToIntFunction;
 import org.junit.jupiter.api.Test;
 
 /**
- * A median build started on a pool's worker forks its subtrees into that pool, so that the command
+ * A median or SAH build started on a pool's worker forks its subtrees into that pool, so that the command
  * line's one pool, sized by --threads, does the build (it used the common pool whatever the pool of
  * the caller).
  */
@@ -30,23 +31,34 @@ class BuildPoolTest {
     }
 
     @Test
-    void aParallelBuildOnAPoolOfOneRunsOnItsOneThread() throws Exception {
+    void aParallelMedianBuildOnAPoolOfOneRunsOnItsOneThread() throws Exception {
+        MedianSplitBuilder serial = new MedianSplitBuilder(4, Integer.MAX_VALUE);
+        MedianSplitBuilder parallel = new MedianSplitBuilder(4, 1000);
+        assertRunsOnAPoolOfOne(boxes -> serial.build(boxes).nodeCount(), boxes -> parallel.build(boxes).nodeCount());
+    }
+
+    @Test
+    void aParallelSahBuildOnAPoolOfOneRunsOnItsOneThread() throws Exception {
+        SahBuilder serial = new SahBuilder(4, Integer.MAX_VALUE);
+        SahBuilder parallel = new SahBuilder(4, 1000);
+        assertRunsOnAPoolOfOne(boxes -> serial.build(boxes).nodeCount(), boxes -> parallel.build(boxes).nodeCount());
+    }
+
+    private static void assertRunsOnAPoolOfOne(ToIntFunction<float[]> serial, ToIntFunction<float[]> parallel) throws Exception {
         // on a pool of one thread, the caller's thread spends the whole build's CPU time when the
         // subtrees fork into its own pool, and almost none when they run elsewhere while it waits
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         assertTrue(threads.isCurrentThreadCpuTimeSupported());
         float[] boxes = boxes(100_000, 11);
-        MedianSplitBuilder serial = new MedianSplitBuilder(4, Integer.MAX_VALUE);
-        MedianSplitBuilder parallel = new MedianSplitBuilder(4, 1000);
         ForkJoinPool one = new ForkJoinPool(1);
         try {
             long[] cpu = one.submit(() -> {
                 long[] spent = new long[2];
                 for (int round = 0; round < 2; round++) { // the first round compiles the builder
                     long start = threads.getCurrentThreadCpuTime();
-                    int serialNodes = serial.build(boxes.clone()).nodeCount();
+                    int serialNodes = serial.applyAsInt(boxes.clone());
                     long between = threads.getCurrentThreadCpuTime();
-                    int parallelNodes = parallel.build(boxes.clone()).nodeCount();
+                    int parallelNodes = parallel.applyAsInt(boxes.clone());
                     spent[0] = between - start;
                     spent[1] = threads.getCurrentThreadCpuTime() - between;
                     assertEquals(serialNodes, parallelNodes);

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** Tree equality for the builder tests: node for node, and the same leaf order. */
+/** Tree equality for the builder tests: node for node, and the same leaf order, binary trees or wide. */
 final class BvhAssertions {
     private BvhAssertions() {
     }
@@ -17,6 +17,16 @@ final class BvhAssertions {
         assertArrayEquals(expected.order, actual.order, "leaf order");
         assertArrayEquals(expected.nodes.children, actual.nodes.children, "children's links and counts");
         assertSameBounds(expected.nodes.bounds, actual.nodes.bounds, "children's boxes");
+    }
+
+    static void assertSameTree(BinaryTree expected, BinaryTree actual) {
+        assertEquals(expected.nodes().count(), actual.nodes().count(), "node count");
+        assertSameBounds(expected.rootBox(), actual.rootBox(), "root box");
+        assertEquals(expected.rootLink(), actual.rootLink(), "root link");
+        assertEquals(expected.rootCount(), actual.rootCount(), "root count");
+        assertArrayEquals(expected.order(), actual.order(), "leaf order");
+        assertArrayEquals(expected.nodes().children, actual.nodes().children, "children's links and counts");
+        assertSameBounds(expected.nodes().bounds, actual.nodes().bounds, "children's boxes");
     }
 
     /**

@@ -49,6 +49,12 @@ class BvhFileTest {
         buffer.putInt(at + 4, 2);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> BvhFile.read(buffer));
         assertTrue(e.getMessage().contains("outside"), e.getMessage());
+        // or an interior node linking back to the root, a cycle a traversal would never leave
+        ByteBuffer cycle = written(bvh);
+        assertEquals(0, bvh.nodes.primitiveCount(1, BvhNodes.LEFT), "node 1 has an interior left child");
+        cycle.putInt(at + 4 * BvhNodes.CHILDREN_PER_NODE, 0);
+        e = assertThrows(IllegalArgumentException.class, () -> BvhFile.read(cycle));
+        assertTrue(e.getMessage().contains("not a node after it"), e.getMessage());
         ByteBuffer bigEndian = ByteBuffer.allocate(64);
         assertThrows(IllegalArgumentException.class, () -> BvhFile.read(bigEndian));
     }

@@ -44,11 +44,11 @@ class SortedMedianBuilderTest {
         for (int i = 0; i < 8; i++) {
             corners[3 * i] = 2 * xs[i];
         }
-        FlatBVH tree = new SortedMedianBuilder(2).build(cubes(corners));
-        assertArrayEquals(new int[] {1, 5, 3, 6, 7, 0, 4, 2}, tree.order, "primitives by x");
-        assertEquals(7, tree.nodeCount());
-        assertEquals(0, tree.rootCount, "the root is an interior node");
-        BvhNodes nodes = tree.nodes;
+        BinaryTree tree = new SortedMedianBuilder(2).binary(cubes(corners));
+        assertArrayEquals(new int[] {1, 5, 3, 6, 7, 0, 4, 2}, tree.order(), "primitives by x");
+        assertEquals(3, tree.nodes().count(), "three interior nodes over four leaves");
+        assertEquals(0, tree.rootCount(), "the root is an interior node");
+        BvhNodes nodes = tree.nodes();
         // node 0 is the root, 1 its left child (x from 0 to 7), 2 its right child (x from 8 to 15)
         assertEquals(1, nodes.link(0, BvhNodes.LEFT));
         assertEquals(2, nodes.link(0, BvhNodes.RIGHT));
@@ -64,6 +64,8 @@ class SortedMedianBuilderTest {
                 assertEquals(4f * leaf, nodes.bounds[BvhNodes.boxAt(node, side)], "the leaf's box starts at its first cube");
             }
         }
+        // flat, the same nodes: the median builders number them depth-first already
+        assertSameTree(tree.flat(), new SortedMedianBuilder(2).build(cubes(corners)));
     }
 
     /** Equal centroids go by primitive id: identical boxes come out in id order. */
@@ -76,9 +78,9 @@ class SortedMedianBuilderTest {
     }
 
     private static void assertFastBuildIsTheSortedBuild(float[] boxes, int leafSize) {
-        FlatBVH sorted = new SortedMedianBuilder(leafSize).build(boxes.clone());
-        assertSameTree(sorted, new MedianSplitBuilder(leafSize, Integer.MAX_VALUE).build(boxes.clone()));
-        assertSameTree(sorted, new MedianSplitBuilder(leafSize, 0).build(boxes.clone())); // in parallel tasks
+        BinaryTree sorted = new SortedMedianBuilder(leafSize).binary(boxes.clone());
+        assertSameTree(sorted, new MedianSplitBuilder(leafSize, Integer.MAX_VALUE).binary(boxes.clone(), null));
+        assertSameTree(sorted, new MedianSplitBuilder(leafSize, 0).binary(boxes.clone(), null)); // in parallel tasks
     }
 
     /**

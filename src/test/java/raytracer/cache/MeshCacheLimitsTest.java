@@ -169,8 +169,9 @@ class MeshCacheLimitsTest {
         load(a, MeshCache.in(models, Long.MAX_VALUE, 0));
         Path first = entries(models).stream().filter(p -> p.getFileName().toString().startsWith("a.obj-")).findFirst().orElseThrow();
         Files.setLastModifiedTime(first, FileTime.from(Instant.now().minus(2, ChronoUnit.HOURS)));
-        // a cap with room for one entry alone: everything else in the folder is over it
-        LoadReport second = load(grid(dir.resolve("b"), "b.obj", 20, 0.2), MeshCache.in(models, Files.size(first) + 100, 0));
+        // a cap with room for one entry alone: everything else in the folder is over it (half as
+        // much again as the first, since the SAH tree of the other grid may have more nodes)
+        LoadReport second = load(grid(dir.resolve("b"), "b.obj", 20, 0.2), MeshCache.in(models, Files.size(first) * 3 / 2, 0));
         assertTrue(second.statistics().toString().contains("1 least recently used entry evicted"), second.statistics().toString());
         assertFalse(Files.exists(first), "the cache's own older entry is evicted");
         for (Path p : users) {

@@ -315,7 +315,7 @@ class SceneAnalysisTest {
         LoadedScene in = SceneLoader.load(Files.writeString(dir.resolve("in.yaml"), scene.formatted("0")));
         SceneAnalysis.apply(in.world(), in.rayTree());
         in.world().prepare();
-        assertTrue(in.report().prepareTimings().keySet().stream().anyMatch(k -> k.startsWith("median BVH of tri.obj")),
+        assertTrue(in.report().prepareTimings().keySet().stream().anyMatch(k -> k.startsWith("sah BVH of tri.obj")),
                    in.report().prepareTimings().toString());
     }
 

@@ -154,19 +154,16 @@ final class SharedMesh {
     }
 
     /**
-     * The tree over the parsed mesh, and the mesh in its leaf order: the median builder carries the
-     * parse's own triangle array into that order; the SAH's order is applied to a copy.
+     * The tree over the parsed mesh, and the mesh in its leaf order: either builder carries the
+     * parse's own triangle array into that order with the triangles' float boxes, so no copy of
+     * the mesh in file order is made.
      */
     private void buildTree(ParsedMesh parsed) {
-        FlatBVH tree;
-        if (builder.equals("median")) {
-            tree = new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(MeshBVH.triangleBoxes(parsed), parsed.triangles());
-            mesh = parsed.afterTrianglesMoved(tree.leafOrder());
-        } else {
-            Mesh flat = parsed.mesh();
-            tree = new SahBuilder(MeshReader.SAH_MAX_LEAF_SIZE).build(MeshBVH.triangleBounds(flat));
-            mesh = flat.reordered(tree.leafOrder());
-        }
+        float[] boxes = MeshBVH.triangleBoxes(parsed);
+        FlatBVH tree = builder.equals("median")
+                       ? new MedianSplitBuilder(MeshReader.MEDIAN_LEAF_SIZE).build(boxes, parsed.triangles())
+                       : new SahBuilder(MeshReader.SAH_MAX_LEAF_SIZE).build(boxes, parsed.triangles());
+        mesh = parsed.afterTrianglesMoved(tree.leafOrder());
         bvh = tree.inLeafOrder();
     }
 

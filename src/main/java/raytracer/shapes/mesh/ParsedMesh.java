@@ -83,7 +83,7 @@ public final class ParsedMesh {
     /**
      * The mesh in a BVH's leaf order, once its triangles have been moved there, in place, by the
      * builder, which carries {@link #triangles()} along with the triangles' boxes
-     * ({@code MedianSplitBuilder.build(boxes, triangles)}): {@code mesh().reordered(order)} as it
+     * ({@code MedianSplitBuilder.build(boxes, triangles)}, {@code SahBuilder.build(boxes, triangles)}): {@code mesh().reordered(order)} as it
      * would have been, its material ids following {@code order}, its vertices numbered by first use
      * and their values copied there. This mesh is spent: its triangle array, renumbered, is the
      * result's, and its positions' blocks are let go.
