@@ -127,7 +127,7 @@ class ShowWindowTest {
         }
         Run run = new Run(child.exitValue(), err.get(10, TimeUnit.SECONDS));
         // when the screen stayed unpainted and the window's own painting was compared, the log says so
-        run.err().lines().filter(line -> line.startsWith("show-capture:")).forEach(System.out::println);
+        run.err().lines().filter(line -> line.startsWith("show-capture:")).forEach(line -> System.out.println(file + ": " + line));
         return run;
     }
 
